@@ -1,0 +1,23 @@
+# The two commands of the README: `make demo` and `make test`. Each installs the
+# Debian packages it needs when missing, builds in .catkin_ws and runs.
+SHELL := /bin/bash
+.PHONY: deps build test demo demo-gui clean
+
+deps:
+	@scripts/install_deps.sh build
+
+build: deps
+	@scripts/build.sh
+
+test: deps
+	@scripts/run_tests.sh
+
+demo: deps
+	@scripts/run_demo.sh
+
+demo-gui:
+	@scripts/install_deps.sh gui
+	@scripts/run_demo.sh gui:=true
+
+clean:
+	rm -rf .catkin_ws

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/brick_world.h"
+#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world_options.h"
+
+namespace brick_stack_sim {
+
+/// How to run a scene without ROS.
+struct RunOptions {
+  WorldOptions world;               ///< Table is replaced by the scene's when it has one.
+  std::optional<double> duration;   ///< Sim time [s]; default: last placement + 5 s.
+};
+
+/// A brick's end state compared with where it was placed.
+struct BrickOutcome {
+  BrickSnapshot brick;
+  double displacement = 0.0;  ///< |final - placed position| [m].
+  double rotation = 0.0;      ///< Angle between final and placed orientation [rad].
+};
+
+/// A refused placement of the scene (e.g. its spot was taken by a fallen brick).
+struct RefusedPlacement {
+  double t = 0.0;
+  std::string id;
+  std::string reason;
+};
+
+struct RunReport {
+  std::string scene;
+  WorldOptions world;
+  double sim_time = 0.0;
+  double wall_time = 0.0;  ///< [s]
+  CostCounters cost;
+  std::vector<BrickOutcome> bricks;
+  std::vector<SimEvent> events;
+  std::vector<RefusedPlacement> refused;
+
+  double maxDisplacement() const;  ///< [m]; 0 with no bricks.
+};
+
+/// Runs `scene` for the requested duration, placing each brick at its time.
+Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
+                RunReport* report);
+
+/// The report as JSON with the keys of DESIGN.md section 4 (and a few more).
+std::string toJson(const RunReport& report);
+
+}  // namespace brick_stack_sim

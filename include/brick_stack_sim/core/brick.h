@@ -1,0 +1,52 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+namespace brick_stack_sim {
+
+/// How the simulator currently treats a brick (values match Brick.msg).
+enum class BrickState : unsigned char {
+  kDynamic = 0,  ///< Simulated by Bullet.
+  kStable = 1,   ///< Frozen: rests stably in the stack.
+  kLeaning = 2,  ///< Frozen: held by the leaning (friction) model.
+  kHeld = 3,     ///< Moved kinematically by a teleop or planner.
+};
+
+/// Lower-case name used in reports: dynamic, stable, leaning, held.
+const char* toString(BrickState state);
+
+/// A request to put a brick into the world.
+struct BrickPlacement {
+  std::string id;    ///< Empty: the world names it brick_<n>.
+  std::string type;  ///< Empty: the library's default type.
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();    ///< Centre of the brick, frame world.
+  Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s], frame world.
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s], frame world.
+};
+
+/// Everything known about one brick at one instant.
+struct BrickSnapshot {
+  std::string id;
+  std::string type;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();              ///< Full extents [m].
+  double mass = 0.0;                                           ///< [kg]
+  BrickState state = BrickState::kDynamic;
+  bool asleep = false;    ///< Bullet has deactivated it (mode none with sleeping).
+  bool fell_off = false;  ///< It has dropped below the table top.
+  Eigen::Vector3d com_above = Eigen::Vector3d::Zero();  ///< COM of it and all it carries [m].
+  double mass_above = 0.0;                              ///< [kg], including itself.
+  std::vector<std::string> supported_by;                ///< Brick ids, or "table".
+  double margin = 0.0;  ///< Signed distance [m] of the COM-above projection to the support
+                        ///< hull edge (< 0: outside). 0 until a stability model fills it.
+  Eigen::Isometry3d placed_pose = Eigen::Isometry3d::Identity();
+  double placed_at = 0.0;  ///< Sim time of placement [s].
+  unsigned serial = 0;     ///< Order of placement since the last reset, from 0; never reused.
+};
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world_options.h"
+
+namespace brick_stack_sim {
+
+/// A brick of a scene and the sim time at which it is placed.
+struct ScheduledBrick {
+  BrickPlacement placement;
+  double at = 0.0;  ///< Placement time [s].
+};
+
+/// A scene (DESIGN.md section 4): an optional table override, optional extra
+/// brick types, and bricks with placement times, sorted by `at` (stable).
+struct Scene {
+  std::string name;
+  std::optional<TableOptions> table;
+  std::vector<BrickType> types;
+  std::vector<ScheduledBrick> bricks;
+};
+
+/// Parameters of the `tower` generator.
+struct TowerParams {
+  int layers = 10;
+  int bricks_per_layer = 2;  ///< 2 or 3.
+  std::string type;          ///< Empty: the default type.
+  double start = 0.0;        ///< Time of the first placement [s].
+  double interval = 0.0;     ///< Time between placements [s]; 0: all at `start`.
+  double gap = 0.0;          ///< Vertical clearance between layers at placement [m].
+};
+
+/// Parses a scene from YAML text. `types` resolves the generators' brick sizes
+/// (together with the scene's own types); `name` is used when the yaml has none.
+Status parseScene(const std::string& yaml_text, const std::string& name,
+                  const BrickTypeLibrary& types, Scene* scene);
+/// Loads a scene from a file, or by name from `scene_dirs` (`<dir>/<name>.yaml`).
+Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
+                 const BrickTypeLibrary& types, Scene* scene);
+
+/// Appends a tower: layers alternate between bricks along x and along y, each
+/// layer resting across the ends of the one below.
+Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
+                     std::vector<ScheduledBrick>* bricks);
+
+/// Adds the scene's own types to `types` (the scene's win on a name clash).
+Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+#include <utility>
+
+namespace brick_stack_sim {
+
+/// Outcome of a request to the core: on failure, `message` says what was wrong
+/// in words a user of a service or a command line can act on.
+struct Status {
+  bool ok = true;
+  std::string message;
+
+  static Status success() { return {}; }
+  static Status error(std::string what) { return {false, std::move(what)}; }
+  explicit operator bool() const { return ok; }
+};
+
+}  // namespace brick_stack_sim

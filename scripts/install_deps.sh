@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the package needs, only those that are missing,
+# so a second run costs a dpkg query. Usage: install_deps.sh [build|demo|gui]
+set -euo pipefail
+
+build_packages=(
+  build-essential cmake pkg-config
+  catkin ros-base-dev ros-message-generation ros-message-runtime rosbash
+  libroscpp-dev librostest-dev python3-rostest python3-rosunit
+  libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
+  libros-rosgraph-msgs-dev libtf2-ros-dev
+  python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
+  libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
+  googletest libgtest-dev
+)
+gui_packages=(rviz xvfb imagemagick)
+
+wanted=("${build_packages[@]}")
+case "${1:-build}" in
+  build|demo) ;;
+  gui) wanted+=("${gui_packages[@]}") ;;
+  *) echo "install_deps.sh: unknown set '$1' (build, demo or gui)" >&2; exit 2 ;;
+esac
+
+missing=()
+for package in "${wanted[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$package")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "Installing Debian packages: ${missing[*]}"
+sudo_cmd=()
+[[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

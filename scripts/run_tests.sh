@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds, runs every gtest and rostest of the package and prints one closing
+# line "N passed, N failed"; exits non-zero when anything failed.
+set -eo pipefail
+source "$(dirname "$0")/env.sh"
+"${repo_root}/scripts/build.sh" tests
+cd "${workspace}"
+results="${workspace}/build/test_results/brick_stack_sim"
+rm -rf "${results}"
+set +e
+# shellcheck disable=SC1091
+source devel/setup.bash
+catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"${workspace}/test.log" 2>&1
+run_status=$?
+set -e
+# The per-test lines of every suite, for the reader of the CI log.
+grep -h -E '^\[ +(OK|FAILED) +\]|^\[ROSTEST\]|^ *\* |FAILURE|ERROR' "${workspace}/test.log" \
+  | grep -v -E 'FAILED TESTS?$' || true
+/usr/bin/python3 - "${results}" "${run_status}" <<'PY'
+import sys, glob, xml.etree.ElementTree as ET
+results_dir, run_status = sys.argv[1], int(sys.argv[2])
+passed = failed = skipped = 0
+files = sorted(glob.glob(results_dir + "/**/*.xml", recursive=True))
+for path in files:
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as error:
+        print(f"unreadable result {path}: {error}"); failed += 1; continue
+    for case in root.iter("testcase"):
+        bad = case.find("failure") is not None or case.find("error") is not None
+        skip = case.find("skipped") is not None
+        name = f"{case.get('classname')}.{case.get('name')}"
+        if bad:
+            failed += 1
+            print(f"FAILED: {name}")
+        elif skip:
+            skipped += 1
+        else:
+            passed += 1
+if not files:
+    print("no test results were written")
+    failed += 1
+if run_status != 0 and failed == 0:
+    print(f"catkin_make run_tests exited {run_status} (see .catkin_ws/test.log)")
+    failed += 1
+print(f"{passed} passed, {failed} failed" + (f", {skipped} skipped" if skipped else ""))
+sys.exit(1 if failed else 0)
+PY
