@@ -7,6 +7,7 @@
 #include "brick_stack_sim/core/brick.h"
 #include "brick_stack_sim/core/brick_world.h"
 #include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/core/scene_player.h"
 #include "brick_stack_sim/core/sim_event.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world_options.h"
@@ -15,8 +16,8 @@ namespace brick_stack_sim {
 
 /// How to run a scene without ROS.
 struct RunOptions {
-  WorldOptions world;               ///< Table is replaced by the scene's when it has one.
-  std::optional<double> duration;   ///< Sim time [s]; default: last placement + 5 s.
+  WorldOptions world;              ///< Table is replaced by the scene's when it has one.
+  std::optional<double> duration;  ///< Sim time [s]; default: last placement + 5 s.
 };
 
 /// A brick's end state compared with where it was placed.
@@ -24,13 +25,6 @@ struct BrickOutcome {
   BrickSnapshot brick;
   double displacement = 0.0;  ///< |final - placed position| [m].
   double rotation = 0.0;      ///< Angle between final and placed orientation [rad].
-};
-
-/// A refused placement of the scene (e.g. its spot was taken by a fallen brick).
-struct RefusedPlacement {
-  double t = 0.0;
-  std::string id;
-  std::string reason;
 };
 
 struct RunReport {

@@ -20,9 +20,9 @@ const char* toString(BrickState state);
 
 /// A request to put a brick into the world.
 struct BrickPlacement {
-  std::string id;    ///< Empty: the world names it brick_<n>.
-  std::string type;  ///< Empty: the library's default type.
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();    ///< Centre of the brick, frame world.
+  std::string id;                                          ///< Empty: the world names it brick_<n>.
+  std::string type;                                        ///< Empty: the library's default type.
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< Centre of the brick, frame world.
   Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s], frame world.
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s], frame world.
 };

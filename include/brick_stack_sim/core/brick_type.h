@@ -15,11 +15,11 @@ namespace brick_stack_sim {
 struct BrickType {
   std::string name;
   Eigen::Vector3d size = Eigen::Vector3d::Zero();     ///< Full extents x, y, z [m].
-  double mass = 0.0;                                   ///< [kg]
+  double mass = 0.0;                                  ///< [kg]
   Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  ///< Principal moments [kg m^2].
-  double friction = 0.5;                               ///< Coulomb coefficient [-].
-  double restitution = 0.0;                            ///< [-], 0 = no bounce.
-  double rolling_friction = 0.0;                       ///< [m], Bullet's rolling friction.
+  double friction = 0.5;                              ///< Coulomb coefficient [-].
+  double restitution = 0.0;                           ///< [-], 0 = no bounce.
+  double rolling_friction = 0.0;                      ///< [m], Bullet's rolling friction.
 
   Eigen::Vector3d halfExtents() const { return 0.5 * size; }
 };
@@ -43,8 +43,8 @@ class BrickTypeLibrary {
   std::vector<std::string> names() const;
   bool empty() const { return types_.empty(); }
 
-  /// The type used when a request names none; the first type of the URDF
-  /// unless the materials yaml sets `default_type`.
+  /// The type used when a request names none: the materials yaml's
+  /// `default_type`, else the alphabetically first type.
   const std::string& defaultType() const { return default_type_; }
   Status setDefaultType(const std::string& name);
 

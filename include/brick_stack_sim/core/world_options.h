@@ -35,7 +35,7 @@ struct WorldOptions {
   /// Split impulse: position errors deeper than this are corrected without
   /// adding velocity [m]. Bullet's -0.04 m is five brick thicknesses.
   double split_impulse_penetration_threshold = -0.0004;
-  double erp = 0.2;              ///< Error reduction per step for contacts [-].
+  double erp = 0.2;                ///< Error reduction per step for contacts [-].
   double collision_margin = 1e-4;  ///< Box collision margin [m], inside the box.
 
   /// A placement that would sink this deep into another brick is refused [m].

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <array>
+
+#include <Eigen/Geometry>
+
+namespace brick_stack_sim {
+
+/// An oriented box: centre and orientation in `pose`, half extents along its axes [m].
+struct OrientedBox {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();
+};
+
+/// The eight corners of a box in world coordinates [m].
+std::array<Eigen::Vector3d, 8> corners(const OrientedBox& box);
+
+/// Separating-axis distance of two boxes [m]: the largest gap along any of the
+/// 15 candidate axes. Positive: the boxes are apart (a lower bound of their
+/// distance). Zero: they touch. Negative: they overlap, and its magnitude is the
+/// depth along the axis of least penetration.
+double separation(const OrientedBox& a, const OrientedBox& b);
+
+/// Whether `rotation` is a proper rotation (orthonormal, determinant +1) within `tolerance`.
+bool isRotation(const Eigen::Matrix3d& rotation, double tolerance = 1e-6);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,166 @@
+#include "brick_stack_sim/core/brick_type.h"
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <urdf_parser/urdf_parser.h>
+#include <yaml-cpp/yaml.h>
+
+namespace brick_stack_sim {
+
+namespace {
+
+bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
+
+Status readFile(const std::string& path, const char* what, std::string* text) {
+  std::ifstream file(path);
+  if (!file) return Status::error(std::string("cannot read ") + what + " '" + path + "'");
+  std::ostringstream buffer;
+  buffer << file.rdbuf();
+  *text = buffer.str();
+  return Status::success();
+}
+
+/// Friction and restitution of one yaml entry over the given defaults.
+Status readMaterial(const YAML::Node& node, const std::string& where, BrickType* type) {
+  if (!node.IsMap()) return Status::error(where + ": expected a map");
+  try {
+    if (node["friction"]) type->friction = node["friction"].as<double>();
+    if (node["restitution"]) type->restitution = node["restitution"].as<double>();
+    if (node["rolling_friction"]) type->rolling_friction = node["rolling_friction"].as<double>();
+  } catch (const YAML::Exception& error) {
+    return Status::error(where + ": " + error.what());
+  }
+  return Status::success();
+}
+
+}  // namespace
+
+Status validateBrickType(const BrickType& t) {
+  const std::string name = "brick type '" + t.name + "'";
+  if (t.name.empty()) return Status::error("brick type without a name");
+  if (!positiveFinite(t.size.x()) || !positiveFinite(t.size.y()) || !positiveFinite(t.size.z()))
+    return Status::error(name + ": size must be positive and finite in x, y and z");
+  if (!positiveFinite(t.mass)) return Status::error(name + ": mass must be positive and finite");
+  const Eigen::Vector3d& i = t.inertia;
+  if (!positiveFinite(i.x()) || !positiveFinite(i.y()) || !positiveFinite(i.z()))
+    return Status::error(name + ": principal inertia must be positive and finite");
+  // A real body's principal moments obey the triangle inequality; a violation
+  // means a typo in the URDF, which would make Bullet spin the brick.
+  const double slack = 1e-9 * i.sum();
+  if (i.x() > i.y() + i.z() + slack || i.y() > i.x() + i.z() + slack ||
+      i.z() > i.x() + i.y() + slack)
+    return Status::error(name + ": principal inertia violates the triangle inequality");
+  if (!std::isfinite(t.friction) || t.friction < 0.0)
+    return Status::error(name + ": friction must be >= 0");
+  if (!std::isfinite(t.restitution) || t.restitution < 0.0 || t.restitution > 1.0)
+    return Status::error(name + ": restitution must be in [0, 1]");
+  if (!std::isfinite(t.rolling_friction) || t.rolling_friction < 0.0)
+    return Status::error(name + ": rolling_friction must be >= 0");
+  return Status::success();
+}
+
+Status BrickTypeLibrary::add(const BrickType& type) {
+  if (Status valid = validateBrickType(type); !valid) return valid;
+  types_[type.name] = type;
+  if (default_type_.empty()) default_type_ = types_.begin()->first;
+  return Status::success();
+}
+
+const BrickType* BrickTypeLibrary::find(const std::string& name) const {
+  auto it = types_.find(name);
+  return it == types_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> BrickTypeLibrary::names() const {
+  std::vector<std::string> result;
+  for (const auto& entry : types_) result.push_back(entry.first);
+  return result;
+}
+
+Status BrickTypeLibrary::setDefaultType(const std::string& name) {
+  if (!find(name)) return Status::error("default brick type '" + name + "' is not a known type");
+  default_type_ = name;
+  return Status::success();
+}
+
+Status BrickTypeLibrary::load(const std::string& urdf_path, const std::string& materials_path,
+                              BrickTypeLibrary* library) {
+  std::string urdf_xml, materials_yaml;
+  if (Status read = readFile(urdf_path, "brick type URDF", &urdf_xml); !read) return read;
+  if (!materials_path.empty()) {
+    if (Status read = readFile(materials_path, "brick materials yaml", &materials_yaml); !read)
+      return read;
+  }
+  Status parsed = parse(urdf_xml, materials_yaml, library);
+  if (!parsed) parsed.message = urdf_path + ": " + parsed.message;
+  return parsed;
+}
+
+Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& materials_yaml,
+                               BrickTypeLibrary* library) {
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
+  if (!model) return Status::error("not a valid URDF");
+
+  YAML::Node loaded;
+  try {
+    loaded = materials_yaml.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(materials_yaml);
+  } catch (const YAML::Exception& error) {
+    return Status::error(std::string("brick materials yaml: ") + error.what());
+  }
+  if (!loaded.IsMap()) return Status::error("brick materials yaml: expected a map at the top");
+  const YAML::Node& materials = loaded;
+  BrickType defaults;
+  if (materials["default"]) {
+    if (Status read = readMaterial(materials["default"], "materials default", &defaults); !read)
+      return read;
+  }
+
+  BrickTypeLibrary result;
+  for (const auto& entry : model->links_) {
+    const urdf::LinkConstSharedPtr& link = entry.second;
+    urdf::GeometrySharedPtr geometry;
+    if (link->collision) geometry = link->collision->geometry;
+    if (!geometry && link->visual) geometry = link->visual->geometry;
+    // Links without a box (a root that only ties the types together) are not bricks.
+    auto box = std::dynamic_pointer_cast<urdf::Box>(geometry);
+    if (!box) continue;
+    if (!link->inertial) return Status::error("link '" + link->name + "' has no <inertial>");
+    BrickType type = defaults;
+    type.name = link->name;
+    type.size = Eigen::Vector3d(box->dim.x, box->dim.y, box->dim.z);
+    type.mass = link->inertial->mass;
+    type.inertia = Eigen::Vector3d(link->inertial->ixx, link->inertial->iyy, link->inertial->izz);
+    const double off_diagonal = std::abs(link->inertial->ixy) + std::abs(link->inertial->ixz) +
+                                std::abs(link->inertial->iyz);
+    if (off_diagonal > 1e-9 * type.inertia.cwiseAbs().sum())
+      return Status::error("link '" + link->name +
+                           "': inertia must be diagonal in the box frame (a uniform box)");
+    const YAML::Node own = materials["types"] ? materials["types"][type.name] : YAML::Node();
+    if (own.IsDefined() && !own.IsNull()) {
+      if (Status read = readMaterial(own, "materials of '" + type.name + "'", &type); !read)
+        return read;
+    }
+    if (Status added = result.add(type); !added) return added;
+  }
+  if (result.empty()) return Status::error("the URDF has no link with a box geometry");
+
+  if (materials["types"]) {
+    if (!materials["types"].IsMap()) return Status::error("materials 'types' must be a map");
+    for (const auto& entry : materials["types"]) {
+      const std::string name = entry.first.as<std::string>();
+      if (!result.find(name))
+        return Status::error("materials name type '" + name + "' that the URDF does not define");
+    }
+  }
+  if (materials["default_type"]) {
+    if (Status set = result.setDefaultType(materials["default_type"].as<std::string>()); !set)
+      return set;
+  }
+  *library = std::move(result);
+  return Status::success();
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,470 @@
+#include "brick_stack_sim/core/brick_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+
+#include "brick_stack_sim/core/box_geometry.h"
+#include "bullet_conversions.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+constexpr const char* kTableId = "table";
+constexpr const char* kWorldId = "world";
+constexpr std::size_t kMaxIdLength = 128;
+
+/// Bullet multiplies the two friction coefficients of a pair, which turns pine
+/// on pine (0.5 each) into 0.25. The geometric mean keeps a material's own
+/// coefficient against itself and stays symmetric for mixed pairs.
+btScalar combinedFriction(const btCollisionObject* a, const btCollisionObject* b) {
+  return std::sqrt(a->getFriction() * b->getFriction());
+}
+
+bool validId(const std::string& id) {
+  if (id.empty() || id.size() > kMaxIdLength) return false;
+  if (!std::isalpha(static_cast<unsigned char>(id[0]))) return false;
+  return std::all_of(id.begin(), id.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+}
+
+std::string formatVector(const Eigen::Vector3d& v) {
+  std::ostringstream text;
+  text.precision(6);
+  text << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return text.str();
+}
+
+std::string millimetres(double metres) {
+  std::ostringstream text;
+  text.precision(3);
+  text << metres * 1000.0 << " mm";
+  return text.str();
+}
+
+}  // namespace
+
+struct BrickRecord {
+  std::string id;
+  BrickType type;
+  std::unique_ptr<btRigidBody> body;
+  Eigen::Isometry3d placed_pose = Eigen::Isometry3d::Identity();
+  double placed_at = 0.0;
+  unsigned serial = 0;
+  bool fell_off = false;
+  // The last state known to be finite, restored if Bullet ever produces NaN.
+  btTransform last_good_transform;
+};
+
+struct BrickWorld::Impl {
+  WorldOptions options;
+  BrickTypeLibrary types;
+
+  // Declaration order is destruction order in reverse: the world goes first.
+  std::unique_ptr<btDefaultCollisionConfiguration> collision_configuration;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> box_box_algorithm;
+  std::unique_ptr<btBroadphaseInterface> broadphase;
+  std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
+  std::unique_ptr<btDiscreteDynamicsWorld> world;
+  std::map<std::string, std::unique_ptr<btBoxShape>> shapes;  // one per brick type
+  std::unique_ptr<btBoxShape> table_shape;
+  std::unique_ptr<btStaticPlaneShape> floor_shape;
+  std::unique_ptr<btRigidBody> table_body;
+  std::unique_ptr<btRigidBody> floor_body;
+
+  std::vector<std::unique_ptr<BrickRecord>> bricks;  // placement order
+  std::unordered_map<std::string, BrickRecord*> by_id;
+  unsigned next_serial = 0;
+  CostCounters cost;
+  std::vector<SimEvent> events;
+
+  ~Impl() { destroyWorld(); }
+
+  double time() const { return static_cast<double>(cost.steps) * options.time_step; }
+
+  void buildWorld();
+  void destroyWorld();
+  btBoxShape* shapeFor(const BrickType& type);
+  std::unique_ptr<btRigidBody> makeBrickBody(const BrickType& type, const BrickPlacement& p);
+  std::string nextFreeId();
+  void emit(SimEventKind kind, const std::string& id, std::string reason,
+            std::vector<std::string> affected = {});
+  std::vector<std::string> wakeTouching(const BrickRecord& brick);
+  void checkAfterStep();
+  BrickSnapshot snapshotOf(const BrickRecord& brick) const;
+};
+
+void BrickWorld::Impl::buildWorld() {
+  collision_configuration = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher = std::make_unique<btCollisionDispatcher>(collision_configuration.get());
+  // Bullet's default box-box path is GJK/EPA, which finds one contact point per
+  // step and needs several steps to build a resting patch; a brick lying on
+  // another wobbles meanwhile. The box-box clipper returns the whole face patch
+  // (up to 4 points) in one step, which is what flat stacking needs.
+  box_box_algorithm = std::make_unique<btBoxBoxCollisionAlgorithm::CreateFunc>();
+  dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
+                                          box_box_algorithm.get());
+  broadphase = std::make_unique<btDbvtBroadphase>();
+  solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+  world = std::make_unique<btDiscreteDynamicsWorld>(dispatcher.get(), broadphase.get(),
+                                                    solver.get(), collision_configuration.get());
+  world->setGravity(btVector3(0, 0, -options.gravity));
+  // Bodies at rest keep their AABB; recomputing every static brick's box each
+  // step dominated the cost of large settled scenes.
+  world->setForceUpdateAllAabbs(false);
+  world->getDispatchInfo().m_deterministicOverlappingPairs = true;
+
+  btContactSolverInfo& solver_info = world->getSolverInfo();
+  solver_info.m_numIterations = options.solver_iterations;
+  // Split impulse corrects penetration without feeding velocity back into the
+  // stack. Bullet only splits below its threshold (-4 cm by default, five brick
+  // thicknesses, so never at this scale); ours is scaled to the brick.
+  solver_info.m_splitImpulse = 1;
+  solver_info.m_splitImpulsePenetrationThreshold = options.split_impulse_penetration_threshold;
+  solver_info.m_erp = options.erp;
+  solver_info.m_erp2 = options.erp;
+  // Never SOLVER_RANDMIZE_ORDER: the same inputs must give the same bits.
+  solver_info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD;
+
+  // Bullet keeps these two as globals; every world sets the same values.
+  gCalculateCombinedFrictionCallback = &combinedFriction;
+  gDeactivationTime = options.deactivation_time;
+
+  const TableOptions& table = options.table;
+  table_shape = std::make_unique<btBoxShape>(
+      btVector3(table.size.x() / 2, table.size.y() / 2, table.thickness / 2));
+  table_shape->setMargin(options.collision_margin);
+  btRigidBody::btRigidBodyConstructionInfo table_info(0.0, nullptr, table_shape.get());
+  table_info.m_startWorldTransform.setOrigin(btVector3(0, 0, -table.thickness / 2));
+  table_info.m_friction = table.friction;
+  table_info.m_restitution = table.restitution;
+  table_body = std::make_unique<btRigidBody>(table_info);
+  world->addRigidBody(table_body.get());
+
+  // The floor catches what falls off the table, so no brick is ever lost.
+  floor_shape = std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), -table.height);
+  btRigidBody::btRigidBodyConstructionInfo floor_info(0.0, nullptr, floor_shape.get());
+  floor_info.m_friction = table.friction;
+  floor_info.m_restitution = table.restitution;
+  floor_body = std::make_unique<btRigidBody>(floor_info);
+  world->addRigidBody(floor_body.get());
+}
+
+void BrickWorld::Impl::destroyWorld() {
+  if (world) {
+    for (auto& brick : bricks) world->removeRigidBody(brick->body.get());
+    if (table_body) world->removeRigidBody(table_body.get());
+    if (floor_body) world->removeRigidBody(floor_body.get());
+  }
+  bricks.clear();
+  by_id.clear();
+  world.reset();
+  solver.reset();
+  broadphase.reset();
+  dispatcher.reset();
+  box_box_algorithm.reset();
+  collision_configuration.reset();
+  table_body.reset();
+  floor_body.reset();
+  table_shape.reset();
+  floor_shape.reset();
+  shapes.clear();
+}
+
+btBoxShape* BrickWorld::Impl::shapeFor(const BrickType& type) {
+  std::unique_ptr<btBoxShape>& shape = shapes[type.name];
+  if (!shape) {
+    shape = std::make_unique<btBoxShape>(convertEigenToBt(type.halfExtents()));
+    // btBoxShape keeps its outer size and puts the margin inside; Bullet's
+    // 4 cm default would be clamped to 10 % of the half thickness anyway.
+    shape->setMargin(std::min(options.collision_margin, 0.1 * type.halfExtents().minCoeff()));
+  }
+  return shape.get();
+}
+
+std::unique_ptr<btRigidBody> BrickWorld::Impl::makeBrickBody(const BrickType& type,
+                                                             const BrickPlacement& p) {
+  btRigidBody::btRigidBodyConstructionInfo info(type.mass, nullptr, shapeFor(type),
+                                                convertEigenToBt(type.inertia));
+  info.m_startWorldTransform = convertEigenToBt(p.pose);
+  info.m_friction = type.friction;
+  info.m_rollingFriction = type.rolling_friction;
+  info.m_restitution = type.restitution;
+  info.m_linearSleepingThreshold = options.linear_sleep_threshold;
+  info.m_angularSleepingThreshold = options.angular_sleep_threshold;
+  auto body = std::make_unique<btRigidBody>(info);
+  body->setLinearVelocity(convertEigenToBt(p.linear_velocity));
+  body->setAngularVelocity(convertEigenToBt(p.angular_velocity));
+  // A brick moving more than its half thickness in one step could pass through
+  // a thin neighbour; continuous collision catches that case only.
+  const double thinnest_half = type.halfExtents().minCoeff();
+  body->setCcdMotionThreshold(thinnest_half);
+  body->setCcdSweptSphereRadius(0.5 * thinnest_half);
+  if (!options.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
+  return body;
+}
+
+std::string BrickWorld::Impl::nextFreeId() {
+  for (unsigned n = next_serial;; ++n) {
+    std::string candidate = "brick_" + std::to_string(n);
+    if (!by_id.count(candidate)) return candidate;
+  }
+}
+
+void BrickWorld::Impl::emit(SimEventKind kind, const std::string& id, std::string reason,
+                            std::vector<std::string> affected) {
+  events.push_back(SimEvent{time(), kind, id, std::move(reason), std::move(affected)});
+}
+
+std::vector<std::string> BrickWorld::Impl::wakeTouching(const BrickRecord& brick) {
+  // Anything whose bounding box comes within a millimetre may rest on or lean
+  // against the brick; waking a few too many costs a few steps, missing one
+  // would leave it floating.
+  btVector3 low, high;
+  brick.body->getAabb(low, high);
+  const btVector3 reach(1e-3, 1e-3, 1e-3);
+  low -= reach;
+  high += reach;
+  std::vector<std::string> woken;
+  for (auto& other : bricks) {
+    if (other.get() == &brick) continue;
+    btVector3 other_low, other_high;
+    other->body->getAabb(other_low, other_high);
+    if (TestAabbAgainstAabb2(low, high, other_low, other_high)) {
+      if (!other->body->isActive()) woken.push_back(other->id);
+      other->body->activate(true);
+    }
+  }
+  return woken;
+}
+
+void BrickWorld::Impl::checkAfterStep() {
+  for (auto& brick : bricks) {
+    btRigidBody& body = *brick->body;
+    if (!body.isActive()) continue;
+    const btTransform& transform = body.getWorldTransform();
+    const Eigen::Isometry3d pose = convertBtToEigen(transform);
+    const bool finite = pose.matrix().allFinite() &&
+                        convertBtToEigen(body.getLinearVelocity()).allFinite() &&
+                        convertBtToEigen(body.getAngularVelocity()).allFinite();
+    if (!finite) {
+      body.setWorldTransform(brick->last_good_transform);
+      body.setInterpolationWorldTransform(brick->last_good_transform);
+      body.setLinearVelocity(btVector3(0, 0, 0));
+      body.setAngularVelocity(btVector3(0, 0, 0));
+      body.clearForces();
+      ++cost.nonfinite;
+      emit(SimEventKind::kNonFinite, brick->id,
+           "Bullet produced NaN/Inf; restored the last finite pose with zero velocity");
+      continue;
+    }
+    brick->last_good_transform = transform;
+    if (!brick->fell_off && pose.translation().z() < -options.fall_off_depth) {
+      brick->fell_off = true;
+      emit(SimEventKind::kFellOff, brick->id,
+           "centre dropped below the table top at " + formatVector(pose.translation()));
+    }
+  }
+}
+
+BrickSnapshot BrickWorld::Impl::snapshotOf(const BrickRecord& brick) const {
+  const btRigidBody& body = *brick.body;
+  BrickSnapshot s;
+  s.id = brick.id;
+  s.type = brick.type.name;
+  s.pose = convertBtToEigen(body.getWorldTransform());
+  s.linear_velocity = convertBtToEigen(body.getLinearVelocity());
+  s.angular_velocity = convertBtToEigen(body.getAngularVelocity());
+  s.size = brick.type.size;
+  s.mass = brick.type.mass;
+  s.state = BrickState::kDynamic;
+  s.asleep = !body.isActive();
+  s.fell_off = brick.fell_off;
+  // Without a stability model a brick carries only itself.
+  s.com_above = s.pose.translation();
+  s.mass_above = s.mass;
+  s.placed_pose = brick.placed_pose;
+  s.placed_at = brick.placed_at;
+  s.serial = brick.serial;
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+
+BrickWorld::BrickWorld(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+BrickWorld::~BrickWorld() = default;
+
+Status BrickWorld::create(const WorldOptions& options, const BrickTypeLibrary& types,
+                          std::unique_ptr<BrickWorld>* world) {
+  world->reset();
+  if (Status valid = validate(options); !valid) return valid;
+  if (types.empty()) return Status::error("no brick types: a world needs at least one");
+  for (const std::string& name : types.names()) {
+    if (Status valid = validateBrickType(*types.find(name)); !valid) return valid;
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->options = options;
+  impl->types = types;
+  impl->buildWorld();
+  world->reset(new BrickWorld(std::move(impl)));
+  return Status::success();
+}
+
+Status BrickWorld::checkPlacement(const BrickPlacement& p) const {
+  const Impl& w = *impl_;
+  if (!p.id.empty()) {
+    if (!validId(p.id))
+      return Status::error("id '" + p.id +
+                           "' is not valid: use a letter then letters, digits, '_' or '-' "
+                           "(at most 128 characters)");
+    if (p.id == kTableId || p.id == kWorldId) return Status::error("id '" + p.id + "' is reserved");
+    if (w.by_id.count(p.id)) return Status::error("id '" + p.id + "' is already in use");
+  }
+  const std::string type_name = p.type.empty() ? w.types.defaultType() : p.type;
+  const BrickType* type = w.types.find(type_name);
+  if (!type) {
+    std::string known;
+    for (const std::string& name : w.types.names()) known += (known.empty() ? "" : ", ") + name;
+    return Status::error("unknown brick type '" + type_name + "' (known: " + known + ")");
+  }
+  if (!p.pose.translation().allFinite())
+    return Status::error("position is not finite: " + formatVector(p.pose.translation()));
+  if (!isRotation(p.pose.linear()))
+    return Status::error("orientation is not a proper rotation (NaN, Inf or not orthonormal)");
+  if (!p.linear_velocity.allFinite() || !p.angular_velocity.allFinite())
+    return Status::error("velocity is not finite");
+  if (p.linear_velocity.norm() > w.options.max_linear_speed)
+    return Status::error("linear speed " + std::to_string(p.linear_velocity.norm()) +
+                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
+  if (p.angular_velocity.norm() > w.options.max_angular_speed)
+    return Status::error("angular speed " + std::to_string(p.angular_velocity.norm()) +
+                         " rad/s exceeds the limit of " +
+                         std::to_string(w.options.max_angular_speed));
+
+  const OrientedBox box{p.pose, type->halfExtents()};
+  double lowest = 0.0;
+  for (const Eigen::Vector3d& corner : corners(box)) lowest = std::min(lowest, corner.z());
+  if (lowest < -w.options.overlap_tolerance)
+    return Status::error("pose puts the brick " + millimetres(-lowest) +
+                         " below the table top (z = 0)");
+  for (const auto& other : w.bricks) {
+    const OrientedBox other_box{convertBtToEigen(other->body->getWorldTransform()),
+                                other->type.halfExtents()};
+    const double gap = separation(box, other_box);
+    if (gap < -w.options.overlap_tolerance)
+      return Status::error("pose overlaps brick '" + other->id + "' by " + millimetres(-gap));
+  }
+  return Status::success();
+}
+
+Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assigned_id) {
+  if (Status ok = checkPlacement(placement); !ok) return ok;
+  Impl& w = *impl_;
+  auto brick = std::make_unique<BrickRecord>();
+  brick->id = placement.id.empty() ? w.nextFreeId() : placement.id;
+  brick->type = *w.types.find(placement.type.empty() ? w.types.defaultType() : placement.type);
+  brick->body = w.makeBrickBody(brick->type, placement);
+  brick->placed_pose = placement.pose;
+  brick->placed_at = w.time();
+  brick->serial = w.next_serial++;
+  brick->last_good_transform = brick->body->getWorldTransform();
+  w.world->addRigidBody(brick->body.get());
+  w.by_id[brick->id] = brick.get();
+  w.emit(SimEventKind::kSpawned, brick->id,
+         "placed as '" + brick->type.name + "' at " + formatVector(placement.pose.translation()));
+  if (assigned_id) *assigned_id = brick->id;
+  w.bricks.push_back(std::move(brick));
+  return Status::success();
+}
+
+Status BrickWorld::removeBrick(const std::string& id) {
+  Impl& w = *impl_;
+  auto found = w.by_id.find(id);
+  if (found == w.by_id.end()) return Status::error("no brick with id '" + id + "'");
+  BrickRecord* brick = found->second;
+  std::vector<std::string> woken = w.wakeTouching(*brick);
+  w.world->removeRigidBody(brick->body.get());
+  w.by_id.erase(found);
+  w.bricks.erase(std::find_if(w.bricks.begin(), w.bricks.end(),
+                              [brick](const auto& entry) { return entry.get() == brick; }));
+  w.emit(SimEventKind::kRemoved, id, "removed by request", std::move(woken));
+  return Status::success();
+}
+
+Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
+                                const Eigen::Vector3d& point) {
+  Impl& w = *impl_;
+  auto found = w.by_id.find(id);
+  if (found == w.by_id.end()) return Status::error("no brick with id '" + id + "'");
+  if (!impulse.allFinite()) return Status::error("impulse is not finite");
+  if (!point.allFinite()) return Status::error("point of application is not finite");
+  btRigidBody& body = *found->second->body;
+  const double speed_change = impulse.norm() / found->second->type.mass;
+  if (speed_change > w.options.max_linear_speed)
+    return Status::error("impulse would change the brick's speed by " +
+                         std::to_string(speed_change) + " m/s, over the limit of " +
+                         std::to_string(w.options.max_linear_speed));
+  body.activate(true);
+  body.applyImpulse(convertEigenToBt(impulse),
+                    convertEigenToBt(point) - body.getCenterOfMassPosition());
+  return Status::success();
+}
+
+void BrickWorld::clear() {
+  Impl& w = *impl_;
+  // Removed in placement order so that observers see a deterministic sequence.
+  for (const auto& brick : w.bricks) w.emit(SimEventKind::kRemoved, brick->id, "scene reset");
+  // A fresh Bullet world: no pair cache or warm-starting data survives a reset,
+  // so a scene loaded after a reset runs exactly as in a new world.
+  w.destroyWorld();
+  w.buildWorld();
+  w.next_serial = 0;
+}
+
+void BrickWorld::step() {
+  Impl& w = *impl_;
+  std::uint64_t awake = 0;
+  for (const auto& brick : w.bricks) awake += brick->body->isActive() ? 1 : 0;
+  // maxSubSteps = 0: exactly one step of exactly time_step, no interpolation.
+  w.world->stepSimulation(w.options.time_step, 0, w.options.time_step);
+  ++w.cost.steps;
+  ++w.cost.bullet_steps;
+  w.cost.awake_brick_steps += awake;
+  w.checkAfterStep();
+}
+
+double BrickWorld::time() const { return impl_->time(); }
+const WorldOptions& BrickWorld::options() const { return impl_->options; }
+const BrickTypeLibrary& BrickWorld::types() const { return impl_->types; }
+const CostCounters& BrickWorld::cost() const { return impl_->cost; }
+std::size_t BrickWorld::brickCount() const { return impl_->bricks.size(); }
+
+std::vector<BrickSnapshot> BrickWorld::snapshot() const {
+  std::vector<BrickSnapshot> result;
+  result.reserve(impl_->bricks.size());
+  for (const auto& brick : impl_->bricks) result.push_back(impl_->snapshotOf(*brick));
+  return result;
+}
+
+bool BrickWorld::find(const std::string& id, BrickSnapshot* brick) const {
+  auto found = impl_->by_id.find(id);
+  if (found == impl_->by_id.end()) return false;
+  if (brick) *brick = impl_->snapshotOf(*found->second);
+  return true;
+}
+
+std::vector<SimEvent> BrickWorld::takeEvents() {
+  std::vector<SimEvent> events;
+  events.swap(impl_->events);
+  return events;
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,150 @@
+// Every entry point of the world fed with bad input: each call must fail with a
+// message that says what was wrong, and leave the world bit-for-bit unchanged.
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/brick_world.h"
+#include "test_support.h"
+
+namespace brick_stack_sim {
+namespace {
+
+using test::fingerprint;
+using test::placement;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+class InvalidInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    world_ = test::makeWorld();
+    ASSERT_TRUE(world_->addBrick(placement("base", {0, 0, 0.0039})).ok);
+    for (int i = 0; i < 20; ++i) world_->step();
+    world_->takeEvents();
+    before_ = fingerprint(*world_);
+  }
+
+  /// The request must be refused, say `expected` in its message, and change nothing.
+  void expectRefused(const Status& status, const std::string& expected) {
+    EXPECT_FALSE(status.ok);
+    EXPECT_NE(status.message.find(expected), std::string::npos)
+        << "message '" << status.message << "' does not mention '" << expected << "'";
+    EXPECT_TRUE(fingerprint(*world_) == before_) << "a refused request changed the world";
+    EXPECT_TRUE(world_->takeEvents().empty()) << "a refused request emitted an event";
+    EXPECT_EQ(world_->brickCount(), 1u);
+  }
+
+  std::unique_ptr<BrickWorld> world_;
+  std::string before_;
+};
+
+TEST_F(InvalidInput, NonFinitePositionInEachAxis) {
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double bad : {kNaN, kInf, -kInf}) {
+      Eigen::Vector3d position(0, 0.1, 0.0039);
+      position[axis] = bad;
+      expectRefused(world_->addBrick(placement("new", position)), "position is not finite");
+    }
+  }
+}
+
+TEST_F(InvalidInput, NonFiniteOrNonRotationOrientation) {
+  BrickPlacement p = placement("new", {0, 0.1, 0.0039});
+  p.pose.linear()(0, 1) = kNaN;
+  expectRefused(world_->addBrick(p), "orientation");
+  p = placement("new", {0, 0.1, 0.0039});
+  p.pose.linear() *= 1.5;  // scaled: not a rotation
+  expectRefused(world_->addBrick(p), "orientation");
+  p = placement("new", {0, 0.1, 0.0039});
+  p.pose.linear()(2, 2) = -1.0;  // a mirror image
+  expectRefused(world_->addBrick(p), "orientation");
+}
+
+TEST_F(InvalidInput, NonFiniteOrExcessiveVelocity) {
+  for (int axis = 0; axis < 3; ++axis) {
+    BrickPlacement p = placement("new", {0, 0.1, 0.0039});
+    p.linear_velocity[axis] = kNaN;
+    expectRefused(world_->addBrick(p), "velocity is not finite");
+    p = placement("new", {0, 0.1, 0.0039});
+    p.angular_velocity[axis] = kInf;
+    expectRefused(world_->addBrick(p), "velocity is not finite");
+  }
+  BrickPlacement p = placement("new", {0, 0.1, 0.0039});
+  p.linear_velocity.x() = 1e6;
+  expectRefused(world_->addBrick(p), "linear speed");
+}
+
+TEST_F(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
+  expectRefused(world_->addBrick(placement("new", {0, 0.1, 0.0039}, 0.0, "granite")),
+                "unknown brick type 'granite'");
+  expectRefused(world_->addBrick(placement("base", {0, 0.1, 0.0039})), "already in use");
+  expectRefused(world_->addBrick(placement("table", {0, 0.1, 0.0039})), "reserved");
+  expectRefused(world_->addBrick(placement("has space", {0, 0.1, 0.0039})), "not valid");
+  expectRefused(world_->addBrick(placement("/slash", {0, 0.1, 0.0039})), "not valid");
+  expectRefused(world_->removeBrick("ghost"), "no brick with id 'ghost'");
+  expectRefused(world_->removeBrick(""), "no brick with id");
+}
+
+TEST_F(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
+  expectRefused(world_->addBrick(placement("new", {0.01, 0, 0.006})), "overlaps brick 'base'");
+  expectRefused(world_->addBrick(placement("new", {0, 0, 0.0039}, M_PI / 2)),
+                "overlaps brick 'base'");
+  expectRefused(world_->addBrick(placement("new", {0, 0.2, 0.002})), "below the table top");
+  expectRefused(world_->addBrick(placement("new", {0, 0.2, -0.5})), "below the table top");
+  // Standing on end, a KAPLA plank reaches 58.5 mm down from its centre.
+  BrickPlacement upright = placement("new", {0, 0.2, 0.05});
+  upright.pose.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  expectRefused(world_->addBrick(upright), "below the table top");
+}
+
+TEST_F(InvalidInput, TouchingIsNotOverlapping) {
+  // Exactly on top of the base brick, and exactly beside it: both accepted.
+  EXPECT_TRUE(world_->checkPlacement(placement("up", {0, 0, 0.0039 + 0.0078})).ok);
+  EXPECT_TRUE(world_->checkPlacement(placement("side", {0, 0.0234, 0.0039})).ok);
+  EXPECT_TRUE(fingerprint(*world_) == before_);  // checking changes nothing either
+}
+
+TEST_F(InvalidInput, NonFiniteImpulse) {
+  expectRefused(world_->applyImpulse("base", {kNaN, 0, 0}, {0, 0, 0}), "impulse is not finite");
+  expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {0, kInf, 0}), "point");
+  expectRefused(world_->applyImpulse("ghost", {0, 0, 0.001}, {0, 0, 0}), "no brick");
+  expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0}), "speed");
+}
+
+TEST(InvalidOptions, EveryBadSettingIsNamed) {
+  struct Case {
+    const char* name;
+    void (*spoil)(WorldOptions*);
+  };
+  const Case cases[] = {
+      {"time_step", [](WorldOptions* o) { o->time_step = 0.0; }},
+      {"time_step", [](WorldOptions* o) { o->time_step = kNaN; }},
+      {"time_step", [](WorldOptions* o) { o->time_step = -0.001; }},
+      {"solver_iterations", [](WorldOptions* o) { o->solver_iterations = 0; }},
+      {"gravity", [](WorldOptions* o) { o->gravity = kInf; }},
+      {"sleeping/linear_threshold", [](WorldOptions* o) { o->linear_sleep_threshold = -1; }},
+      {"sleeping/time", [](WorldOptions* o) { o->deactivation_time = 0; }},
+      {"erp", [](WorldOptions* o) { o->erp = 2.0; }},
+      {"table/size", [](WorldOptions* o) { o->table.size.y() = 0.0; }},
+      {"table/height", [](WorldOptions* o) { o->table.height = kNaN; }},
+      {"table/friction", [](WorldOptions* o) { o->table.friction = -0.1; }},
+      {"overlap_tolerance", [](WorldOptions* o) { o->overlap_tolerance = kNaN; }},
+      {"stability mode 'com'", [](WorldOptions* o) { o->mode = StabilityMode::kCom; }},
+  };
+  for (const Case& c : cases) {
+    WorldOptions options;
+    c.spoil(&options);
+    std::unique_ptr<BrickWorld> world;
+    const Status status = BrickWorld::create(options, test::packageTypes(), &world);
+    EXPECT_FALSE(status.ok) << c.name;
+    EXPECT_EQ(world, nullptr);
+    EXPECT_NE(status.message.find(c.name), std::string::npos) << status.message;
+  }
+  std::unique_ptr<BrickWorld> world;
+  EXPECT_FALSE(BrickWorld::create(WorldOptions(), BrickTypeLibrary(), &world).ok);
+}
+
+}  // namespace
+}  // namespace brick_stack_sim

@@ -1,0 +1,140 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/scene.h"
+#include "test_support.h"
+
+namespace brick_stack_sim {
+namespace {
+
+using test::kKaplaLength;
+using test::kKaplaThickness;
+using test::kKaplaWidth;
+
+TEST(Scene, ParsesBricksWithTimesAndPoses) {
+  Scene scene;
+  const Status s = parseScene(R"(
+bricks:
+  - {id: b1, at: 1.0, position: [0.01, 0, 0.0117], rpy: [0, 0, 1.5708],
+     linear_velocity: [0, 0, -0.1], angular_velocity: [0, 0, 0]}
+  - {id: b0, type: kapla, at: 0.0, position: [0, 0, 0.0039], rpy: [0, 0, 0]}
+)",
+                              "two", test::packageTypes(), &scene);
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_EQ(scene.name, "two");
+  ASSERT_EQ(scene.bricks.size(), 2u);
+  EXPECT_EQ(scene.bricks[0].placement.id, "b0");  // sorted by placement time
+  EXPECT_EQ(scene.bricks[1].at, 1.0);
+  const BrickPlacement& b1 = scene.bricks[1].placement;
+  EXPECT_NEAR(b1.pose.translation().z(), 0.0117, 1e-15);
+  // yaw 1.5708 turns the brick's long x axis onto y.
+  EXPECT_NEAR(b1.pose.linear().col(0).y(), 1.0, 1e-8);
+  EXPECT_DOUBLE_EQ(b1.linear_velocity.z(), -0.1);
+}
+
+TEST(Scene, RefusesTyposAndBadValuesWithTheirPlace) {
+  const BrickTypeLibrary types = test::packageTypes();
+  Scene scene;
+  Status s = parseScene("bricks:\n  - {positon: [0, 0, 0.0039]}\n", "typo", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("positon"), std::string::npos) << s.message;
+  s = parseScene("bricks:\n  - {position: [0, 0]}\n", "short", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("bricks[0].position"), std::string::npos) << s.message;
+  s = parseScene("bricks:\n  - {position: [0, .nan, 0]}\n", "nan", types, &scene);
+  EXPECT_FALSE(s.ok);
+  s = parseScene("bricks:\n  - {id: a, position: [0, 0, 0.01]}\n  - {id: a, position: [0, 1, 0]}\n",
+                 "dup", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("twice"), std::string::npos) << s.message;
+  s = parseScene("bricks:\n  - {type: marble, position: [0, 0, 0.01]}\n", "type", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("marble"), std::string::npos) << s.message;
+  s = parseScene("generator: {name: spiral}\n", "gen", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("spiral"), std::string::npos) << s.message;
+  s = parseScene("bricks: [\n", "broken", types, &scene);
+  EXPECT_FALSE(s.ok);
+  s = parseScene("types: {slab: {size: [0.1, 0, 0.01], mass: 0.1}}\n", "zero", types, &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("size"), std::string::npos) << s.message;
+}
+
+TEST(Scene, UnknownSceneNameSaysWhereItLooked) {
+  Scene scene;
+  const Status s =
+      loadScene("no_such_scene", {test::dataPath("scenes")}, test::packageTypes(), &scene);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.message.find("no_such_scene"), std::string::npos);
+  EXPECT_NE(s.message.find("scenes"), std::string::npos);
+}
+
+TEST(Scene, SceneTypesAndTableAreRead) {
+  Scene scene;
+  const Status s = parseScene(R"(
+table: {size: [0.5, 0.4], friction: 0.7}
+types: {slab: {size: [0.1, 0.1, 0.01], mass: 0.06}}
+bricks: [{type: slab, position: [0, 0, 0.005]}]
+)",
+                              "custom", test::packageTypes(), &scene);
+  ASSERT_TRUE(s.ok) << s.message;
+  ASSERT_TRUE(scene.table.has_value());
+  EXPECT_DOUBLE_EQ(scene.table->size.x(), 0.5);
+  EXPECT_DOUBLE_EQ(scene.table->friction, 0.7);
+  ASSERT_EQ(scene.types.size(), 1u);
+  // Inertia of a uniform box: m (b^2 + c^2) / 12.
+  EXPECT_NEAR(scene.types[0].inertia.x(), 0.06 * (0.01 + 0.0001) / 12, 1e-15);
+}
+
+TEST(Scene, TowerLayersCrossAndRestOnEachOther) {
+  std::vector<ScheduledBrick> bricks;
+  TowerParams params;
+  params.layers = 4;
+  params.interval = 1.0;
+  ASSERT_TRUE(generateTower(params, test::packageTypes(), &bricks).ok);
+  ASSERT_EQ(bricks.size(), 8u);
+  const double offset = (kKaplaLength - kKaplaWidth) / 2;
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    const int layer = static_cast<int>(i / 2);
+    const Eigen::Isometry3d& pose = bricks[i].placement.pose;
+    EXPECT_DOUBLE_EQ(bricks[i].at, static_cast<double>(i));
+    EXPECT_NEAR(pose.translation().z(), kKaplaThickness * (layer + 0.5), 1e-15);
+    const Eigen::Vector3d long_axis = pose.linear().col(0);
+    if (layer % 2 == 0) {
+      EXPECT_NEAR(std::abs(long_axis.x()), 1.0, 1e-12);
+      EXPECT_NEAR(std::abs(pose.translation().y()), offset, 1e-15);
+    } else {
+      EXPECT_NEAR(std::abs(long_axis.y()), 1.0, 1e-12);
+      EXPECT_NEAR(std::abs(pose.translation().x()), offset, 1e-15);
+    }
+  }
+  // The ends of a crosswise brick lie exactly over the two bricks below it.
+  EXPECT_NEAR(offset + kKaplaWidth / 2, kKaplaLength / 2, 1e-15);
+}
+
+TEST(Scene, TowerRefusesBadParameters) {
+  std::vector<ScheduledBrick> bricks;
+  TowerParams params;
+  params.bricks_per_layer = 4;
+  EXPECT_FALSE(generateTower(params, test::packageTypes(), &bricks).ok);
+  params.bricks_per_layer = 3;
+  params.layers = 0;
+  EXPECT_FALSE(generateTower(params, test::packageTypes(), &bricks).ok);
+  params.layers = 2;
+  params.type = "marble";
+  EXPECT_FALSE(generateTower(params, test::packageTypes(), &bricks).ok);
+  EXPECT_TRUE(bricks.empty());
+}
+
+TEST(Scene, PackageScenesAllLoad) {
+  for (const char* name : {"tower10", "tower25_built", "single_drop"}) {
+    Scene scene;
+    const Status s = loadScene(name, {test::dataPath("scenes")}, test::packageTypes(), &scene);
+    EXPECT_TRUE(s.ok) << s.message;
+    EXPECT_FALSE(scene.bricks.empty()) << name;
+  }
+}
+
+}  // namespace
+}  // namespace brick_stack_sim

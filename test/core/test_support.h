@@ -1,0 +1,68 @@
+#pragma once
+// Shared fixtures of the core tests: the package's own brick types and a
+// fingerprint of a world's state to prove that a refused request changed nothing.
+
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/brick_world.h"
+
+namespace brick_stack_sim {
+namespace test {
+
+inline std::string dataPath(const std::string& relative) {
+  return std::string(BRICK_STACK_SIM_SOURCE_DIR) + "/" + relative;
+}
+
+inline BrickTypeLibrary packageTypes() {
+  BrickTypeLibrary types;
+  const Status loaded =
+      BrickTypeLibrary::load(dataPath("urdf/bricks.urdf"), dataPath("config/bricks.yaml"), &types);
+  EXPECT_TRUE(loaded.ok) << loaded.message;
+  return types;
+}
+
+inline std::unique_ptr<BrickWorld> makeWorld(const WorldOptions& options = WorldOptions()) {
+  std::unique_ptr<BrickWorld> world;
+  const Status created = BrickWorld::create(options, packageTypes(), &world);
+  EXPECT_TRUE(created.ok) << created.message;
+  return world;
+}
+
+/// The exact bits of every brick's id, pose and velocity, plus the clock.
+inline std::string fingerprint(const BrickWorld& world) {
+  std::string bytes;
+  auto append = [&bytes](const void* data, std::size_t size) {
+    bytes.append(static_cast<const char*>(data), size);
+  };
+  const double time = world.time();
+  append(&time, sizeof time);
+  for (const BrickSnapshot& b : world.snapshot()) {
+    bytes += b.id + '\0' + b.type + '\0';
+    append(b.pose.matrix().data(), sizeof(double) * 16);
+    append(b.linear_velocity.data(), sizeof(double) * 3);
+    append(b.angular_velocity.data(), sizeof(double) * 3);
+  }
+  return bytes;
+}
+
+inline BrickPlacement placement(const std::string& id, const Eigen::Vector3d& position,
+                                double yaw = 0.0, const std::string& type = "kapla") {
+  BrickPlacement p;
+  p.id = id;
+  p.type = type;
+  p.pose.translation() = position;
+  p.pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return p;
+}
+
+constexpr double kKaplaLength = 0.117;      // [m]
+constexpr double kKaplaWidth = 0.0234;      // [m]
+constexpr double kKaplaThickness = 0.0078;  // [m]
+constexpr double kKaplaMass = 0.0119;       // [kg]
+
+}  // namespace test
+}  // namespace brick_stack_sim
