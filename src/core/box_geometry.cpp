@@ -1,5 +1,7 @@
 #include "brick_stack_sim/core/box_geometry.h"
 
+#include "brick_stack_sim/core/polygon2d.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,6 +53,51 @@ double separation(const OrientedBox& a, const OrientedBox& b) {
     }
   }
   return largest_gap;
+}
+
+namespace {
+
+/// The face of `box` whose outward normal points most along `direction`:
+/// its unit normal and its four corners.
+void faceToward(const OrientedBox& box, const Eigen::Vector3d& direction, Eigen::Vector3d* normal,
+                std::array<Eigen::Vector3d, 4>* face) {
+  const Eigen::Matrix3d& r = box.pose.linear();
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(r.col(i).dot(direction)) > std::abs(r.col(axis).dot(direction))) axis = i;
+  const double sign = r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0;
+  *normal = sign * r.col(axis);
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Eigen::Vector3d centre = box.pose.translation() + *normal * box.half_extents[axis];
+  const Eigen::Vector3d du = r.col(u) * box.half_extents[u], dv = r.col(v) * box.half_extents[v];
+  *face = {centre - du - dv, centre + du - dv, centre + du + dv, centre - du + dv};
+}
+
+}  // namespace
+
+bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
+                       std::vector<Eigen::Vector3d>* patch) {
+  Eigen::Vector3d lower_normal, upper_normal;
+  std::array<Eigen::Vector3d, 4> lower_face, upper_face;
+  faceToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal, &lower_face);
+  faceToward(upper, -Eigen::Vector3d::UnitZ(), &upper_normal, &upper_face);
+  if (lower_normal.dot(-upper_normal) < std::cos(max_angle)) return false;
+  if (lower_normal.z() <= 0.0) return false;  // a face that looks down carries nothing
+  std::vector<Eigen::Vector2d> lower_2d, upper_2d;
+  for (const Eigen::Vector3d& c : lower_face) lower_2d.push_back(c.head<2>());
+  for (const Eigen::Vector3d& c : upper_face) upper_2d.push_back(c.head<2>());
+  const Polygon2d overlap = intersectConvex(convexHull(upper_2d), convexHull(lower_2d));
+  if (overlap.empty()) return false;
+  // Lift each corner onto the plane of the lower face.
+  const Eigen::Vector3d& origin = lower_face[0];
+  patch->clear();
+  for (const Eigen::Vector2d& corner : overlap) {
+    const double z = origin.z() - (lower_normal.x() * (corner.x() - origin.x()) +
+                                   lower_normal.y() * (corner.y() - origin.y())) /
+                                      lower_normal.z();
+    patch->emplace_back(corner.x(), corner.y(), z);
+  }
+  return true;
 }
 
 bool isRotation(const Eigen::Matrix3d& rotation, double tolerance) {

@@ -10,6 +10,7 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 
 #include "brick_stack_sim/core/box_geometry.h"
+#include "brick_stack_sim/core/com_stability_model.h"
 #include "bullet_conversions.h"
 
 namespace brick_stack_sim {
@@ -19,6 +20,16 @@ namespace {
 constexpr const char* kTableId = "table";
 constexpr const char* kWorldId = "world";
 constexpr std::size_t kMaxIdLength = 128;
+// Bullet's user index of the static bodies; bricks carry their serial.
+constexpr int kTableUserIndex = -2;
+constexpr int kFloorUserIndex = -3;
+
+BodyHandle handleOf(const btCollisionObject* object) {
+  const int index = object->getUserIndex();
+  if (index == kTableUserIndex) return kTableHandle;
+  if (index == kFloorUserIndex) return kFloorHandle;
+  return static_cast<BodyHandle>(index);
+}
 
 /// Bullet multiplies the two friction coefficients of a pair, which turns pine
 /// on pine (0.5 each) into 0.25. The geometric mean keeps a material's own
@@ -59,6 +70,7 @@ struct BrickRecord {
   double placed_at = 0.0;
   unsigned serial = 0;
   bool fell_off = false;
+  bool frozen = false;  // taken out of Bullet's dynamics by the stability model
   // The last state known to be finite, restored if Bullet ever produces NaN.
   btTransform last_good_transform;
 };
@@ -82,6 +94,9 @@ struct BrickWorld::Impl {
 
   std::vector<std::unique_ptr<BrickRecord>> bricks;  // placement order
   std::unordered_map<std::string, BrickRecord*> by_id;
+  std::unordered_map<BodyHandle, BrickRecord*> by_handle;
+  std::unique_ptr<StabilityModel> model;  // null in mode none
+  std::vector<PairContact> contacts;      // of the last Bullet step
   unsigned next_serial = 0;
   CostCounters cost;
   std::vector<SimEvent> events;
@@ -100,6 +115,18 @@ struct BrickWorld::Impl {
   std::vector<std::string> wakeTouching(const BrickRecord& brick);
   void checkAfterStep();
   BrickSnapshot snapshotOf(const BrickRecord& brick) const;
+  std::string nameOf(BodyHandle handle) const;
+  OrientedBox boxOf(BodyHandle handle) const;
+
+  // Stability model plumbing.
+  void readContacts();
+  void runStabilityModel(bool bullet_stepped);
+  void apply(const StabilityDecisions& decisions);
+  void freezeBody(BrickRecord* brick);
+  void wakeBody(BrickRecord* brick);
+  std::string wakeReason(const WakeDecision& decision) const;
+  /// Flush supports of a brick resting where it was just placed, from geometry.
+  std::vector<PairContact> placementSupports(const BrickRecord& brick) const;
 };
 
 void BrickWorld::Impl::buildWorld() {
@@ -147,6 +174,7 @@ void BrickWorld::Impl::buildWorld() {
   table_info.m_friction = table.friction;
   table_info.m_restitution = table.restitution;
   table_body = std::make_unique<btRigidBody>(table_info);
+  table_body->setUserIndex(kTableUserIndex);
   world->addRigidBody(table_body.get());
 
   // The floor catches what falls off the table, so no brick is ever lost.
@@ -155,6 +183,7 @@ void BrickWorld::Impl::buildWorld() {
   floor_info.m_friction = table.friction;
   floor_info.m_restitution = table.restitution;
   floor_body = std::make_unique<btRigidBody>(floor_info);
+  floor_body->setUserIndex(kFloorUserIndex);
   world->addRigidBody(floor_body.get());
 }
 
@@ -166,6 +195,8 @@ void BrickWorld::Impl::destroyWorld() {
   }
   bricks.clear();
   by_id.clear();
+  by_handle.clear();
+  contacts.clear();
   world.reset();
   solver.reset();
   broadphase.reset();
@@ -235,7 +266,7 @@ std::vector<std::string> BrickWorld::Impl::wakeTouching(const BrickRecord& brick
   high += reach;
   std::vector<std::string> woken;
   for (auto& other : bricks) {
-    if (other.get() == &brick) continue;
+    if (other.get() == &brick || other->frozen) continue;  // the model wakes frozen ones
     btVector3 other_low, other_high;
     other->body->getAabb(other_low, other_high);
     if (TestAabbAgainstAabb2(low, high, other_low, other_high)) {
@@ -285,16 +316,185 @@ BrickSnapshot BrickWorld::Impl::snapshotOf(const BrickRecord& brick) const {
   s.angular_velocity = convertBtToEigen(body.getAngularVelocity());
   s.size = brick.type.size;
   s.mass = brick.type.mass;
-  s.state = BrickState::kDynamic;
-  s.asleep = !body.isActive();
+  s.state = brick.frozen ? BrickState::kStable : BrickState::kDynamic;
+  s.asleep = !brick.frozen && !body.isActive();
   s.fell_off = brick.fell_off;
   // Without a stability model a brick carries only itself.
   s.com_above = s.pose.translation();
   s.mass_above = s.mass;
+  BrickStability stability;
+  if (model && model->describe(brick.serial, &stability)) {
+    s.com_above = stability.com_above;
+    s.mass_above = stability.mass_above;
+    s.margin = stability.margin;
+    for (const SupportPatch& patch : stability.supports)
+      s.supported_by.push_back(nameOf(patch.supporter));
+  }
   s.placed_pose = brick.placed_pose;
   s.placed_at = brick.placed_at;
   s.serial = brick.serial;
   return s;
+}
+
+std::string BrickWorld::Impl::nameOf(BodyHandle handle) const {
+  if (handle == kTableHandle) return kTableId;
+  if (handle == kFloorHandle) return "floor";
+  auto it = by_handle.find(handle);
+  return it == by_handle.end() ? "brick#" + std::to_string(handle) : it->second->id;
+}
+
+OrientedBox BrickWorld::Impl::boxOf(BodyHandle handle) const {
+  OrientedBox box;
+  if (handle == kTableHandle) {
+    box.half_extents = Eigen::Vector3d(options.table.size.x() / 2, options.table.size.y() / 2,
+                                       options.table.thickness / 2);
+    box.pose.translation().z() = -options.table.thickness / 2;
+  } else if (handle == kFloorHandle) {
+    // The floor plane as a slab far wider than anything that can land on it.
+    box.half_extents = Eigen::Vector3d(1e3, 1e3, 0.5);
+    box.pose.translation().z() = -options.table.height - 0.5;
+  } else {
+    const BrickRecord& brick = *by_handle.at(handle);
+    box.pose = convertBtToEigen(brick.body->getWorldTransform());
+    box.half_extents = brick.type.halfExtents();
+  }
+  return box;
+}
+
+void BrickWorld::Impl::readContacts() {
+  contacts.clear();
+  const int manifolds = dispatcher->getNumManifolds();
+  for (int i = 0; i < manifolds; ++i) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(i);
+    if (manifold->getNumContacts() == 0) continue;
+    const btRigidBody* a = btRigidBody::upcast(manifold->getBody0());
+    const btRigidBody* b = btRigidBody::upcast(manifold->getBody1());
+    PairContact pair;
+    pair.a = handleOf(a);
+    pair.b = handleOf(b);
+    btVector3 normal_sum(0, 0, 0);
+    for (int j = 0; j < manifold->getNumContacts(); ++j) {
+      const btManifoldPoint& point = manifold->getContactPoint(j);
+      if (point.getDistance() > options.stability.contact_distance) continue;
+      const btVector3 position = 0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB());
+      const btVector3 relative =
+          a->getVelocityInLocalPoint(position - a->getCenterOfMassPosition()) -
+          b->getVelocityInLocalPoint(position - b->getCenterOfMassPosition());
+      // The normal points from b to a: a negative relative speed along it closes the gap.
+      pair.approach_speed = std::max(pair.approach_speed, -relative.dot(point.m_normalWorldOnB));
+      pair.points.push_back(convertBtToEigen(position));
+      normal_sum += point.m_normalWorldOnB;
+    }
+    if (pair.points.empty() || normal_sum.length2() == 0.0) continue;
+    pair.normal = convertBtToEigen(normal_sum.normalized());
+    if (std::abs(pair.normal.z()) >= std::cos(options.stability.support_normal_tolerance)) {
+      const bool b_below = pair.normal.z() > 0.0;
+      std::vector<Eigen::Vector3d> patch;
+      if (flushContactPatch(boxOf(b_below ? pair.b : pair.a), boxOf(b_below ? pair.a : pair.b),
+                            options.stability.flush_angle, &patch))
+        pair.points = std::move(patch);
+    }
+    contacts.push_back(std::move(pair));
+  }
+}
+
+void BrickWorld::Impl::runStabilityModel(bool bullet_stepped) {
+  // Nothing moved and nothing is pending: the model would find what it found.
+  if (!bullet_stepped && !model->busy()) return;
+  if (bullet_stepped) readContacts();
+  std::vector<BodyMotion> movers;
+  for (const auto& brick : bricks) {
+    if (brick->frozen) continue;
+    const btRigidBody& body = *brick->body;
+    movers.push_back(BodyMotion{brick->serial, convertBtToEigen(body.getCenterOfMassPosition()),
+                                brick->type.mass, convertBtToEigen(body.getLinearVelocity()),
+                                convertBtToEigen(body.getAngularVelocity()), false});
+  }
+  StabilityDecisions decisions;
+  model->update(options.time_step, movers, contacts, &decisions);
+  ++cost.stability_updates;
+  apply(decisions);
+}
+
+void BrickWorld::Impl::freezeBody(BrickRecord* brick) {
+  btRigidBody* body = brick->body.get();
+  // Bullet keeps static and dynamic bodies in different broadphase groups,
+  // chosen when a body is added: out, change, back in.
+  world->removeRigidBody(body);
+  body->setLinearVelocity(btVector3(0, 0, 0));
+  body->setAngularVelocity(btVector3(0, 0, 0));
+  body->setMassProps(0.0, btVector3(0, 0, 0));  // also sets CF_STATIC_OBJECT
+  body->updateInertiaTensor();
+  body->clearForces();
+  world->addRigidBody(body);
+  brick->frozen = true;
+}
+
+void BrickWorld::Impl::wakeBody(BrickRecord* brick) {
+  btRigidBody* body = brick->body.get();
+  world->removeRigidBody(body);
+  body->setMassProps(brick->type.mass, convertEigenToBt(brick->type.inertia));
+  body->updateInertiaTensor();
+  body->setLinearVelocity(btVector3(0, 0, 0));
+  body->setAngularVelocity(btVector3(0, 0, 0));
+  world->addRigidBody(body);
+  body->forceActivationState(options.sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+  body->setDeactivationTime(0.0);
+  brick->last_good_transform = body->getWorldTransform();
+  brick->frozen = false;
+}
+
+std::vector<PairContact> BrickWorld::Impl::placementSupports(const BrickRecord& brick) const {
+  const OrientedBox box = boxOf(brick.serial);
+  std::vector<PairContact> supports;
+  auto try_support = [&](BodyHandle lower) {
+    const OrientedBox lower_box = boxOf(lower);
+    const double gap = separation(lower_box, box);
+    if (gap > options.stability.contact_distance || gap < -options.overlap_tolerance) return;
+    PairContact contact;
+    contact.a = brick.serial;
+    contact.b = lower;
+    if (flushContactPatch(lower_box, box, options.stability.flush_angle, &contact.points))
+      supports.push_back(std::move(contact));
+  };
+  try_support(kTableHandle);
+  for (const auto& other : bricks)
+    if (other->frozen) try_support(other->serial);
+  return supports;
+}
+
+std::string BrickWorld::Impl::wakeReason(const WakeDecision& d) const {
+  switch (d.cause) {
+    case WakeCause::kOutsideSupport:
+      return "COM-above left its support: margin " + millimetres(d.margin);
+    case WakeCause::kCarried:
+      return "carried by " + nameOf(d.because_of) + ", which was woken";
+    case WakeCause::kSupporterRemoved:
+      return "its supporter " + nameOf(d.because_of) + " was removed";
+    case WakeCause::kPushed:
+      return "pushed";
+    case WakeCause::kSupportCycle:
+      return "its supports form a cycle";
+  }
+  return "woken";
+}
+
+void BrickWorld::Impl::apply(const StabilityDecisions& decisions) {
+  for (const FreezeDecision& d : decisions.freeze) {
+    auto it = by_handle.find(d.brick);
+    if (it == by_handle.end()) continue;
+    freezeBody(it->second);
+    std::string on;
+    for (BodyHandle supporter : d.supporters) on += (on.empty() ? "" : ", ") + nameOf(supporter);
+    emit(SimEventKind::kFrozen, it->second->id,
+         "rests stably on " + on + " (margin " + millimetres(d.margin) + ")");
+  }
+  for (const WakeDecision& d : decisions.wake) {
+    auto it = by_handle.find(d.brick);
+    if (it == by_handle.end()) continue;
+    wakeBody(it->second);
+    emit(SimEventKind::kWoken, it->second->id, wakeReason(d));
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -314,6 +514,8 @@ Status BrickWorld::create(const WorldOptions& options, const BrickTypeLibrary& t
   impl->options = options;
   impl->types = types;
   impl->buildWorld();
+  if (options.mode == StabilityMode::kCom)
+    impl->model = std::make_unique<ComStabilityModel>(options.stability);
   world->reset(new BrickWorld(std::move(impl)));
   return Status::success();
 }
@@ -376,12 +578,23 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
   brick->placed_at = w.time();
   brick->serial = w.next_serial++;
   brick->last_good_transform = brick->body->getWorldTransform();
+  brick->body->setUserIndex(static_cast<int>(brick->serial));
   w.world->addRigidBody(brick->body.get());
   w.by_id[brick->id] = brick.get();
+  w.by_handle[brick->serial] = brick.get();
   w.emit(SimEventKind::kSpawned, brick->id,
          "placed as '" + brick->type.name + "' at " + formatVector(placement.pose.translation()));
   if (assigned_id) *assigned_id = brick->id;
+  BrickRecord* record = brick.get();
   w.bricks.push_back(std::move(brick));
+  if (w.model && placement.linear_velocity.isZero() && placement.angular_velocity.isZero()) {
+    StabilityDecisions decisions;
+    w.model->placedAtRest(
+        BodyMotion{record->serial, placement.pose.translation(), record->type.mass,
+                   Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), false},
+        w.placementSupports(*record), &decisions);
+    w.apply(decisions);
+  }
   return Status::success();
 }
 
@@ -390,9 +603,18 @@ Status BrickWorld::removeBrick(const std::string& id) {
   auto found = w.by_id.find(id);
   if (found == w.by_id.end()) return Status::error("no brick with id '" + id + "'");
   BrickRecord* brick = found->second;
-  std::vector<std::string> woken = w.wakeTouching(*brick);
+  std::vector<std::string> woken;
+  if (w.model) {
+    StabilityDecisions decisions;
+    w.model->remove(brick->serial, &decisions);
+    w.apply(decisions);
+    for (const WakeDecision& d : decisions.wake) woken.push_back(w.nameOf(d.brick));
+  }
+  for (std::string& id : w.wakeTouching(*brick))
+    if (std::find(woken.begin(), woken.end(), id) == woken.end()) woken.push_back(std::move(id));
   w.world->removeRigidBody(brick->body.get());
   w.by_id.erase(found);
+  w.by_handle.erase(brick->serial);
   w.bricks.erase(std::find_if(w.bricks.begin(), w.bricks.end(),
                               [brick](const auto& entry) { return entry.get() == brick; }));
   w.emit(SimEventKind::kRemoved, id, "removed by request", std::move(woken));
@@ -412,6 +634,11 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
     return Status::error("impulse would change the brick's speed by " +
                          std::to_string(speed_change) + " m/s, over the limit of " +
                          std::to_string(w.options.max_linear_speed));
+  if (found->second->frozen) {
+    StabilityDecisions decisions;
+    w.model->wake(found->second->serial, WakeCause::kPushed, &decisions);
+    w.apply(decisions);
+  }
   body.activate(true);
   body.applyImpulse(convertEigenToBt(impulse),
                     convertEigenToBt(point) - body.getCenterOfMassPosition());
@@ -426,19 +653,26 @@ void BrickWorld::clear() {
   // so a scene loaded after a reset runs exactly as in a new world.
   w.destroyWorld();
   w.buildWorld();
+  if (w.model) w.model->clear();
   w.next_serial = 0;
 }
 
 void BrickWorld::step() {
   Impl& w = *impl_;
   std::uint64_t awake = 0;
-  for (const auto& brick : w.bricks) awake += brick->body->isActive() ? 1 : 0;
-  // maxSubSteps = 0: exactly one step of exactly time_step, no interpolation.
-  w.world->stepSimulation(w.options.time_step, 0, w.options.time_step);
+  for (const auto& brick : w.bricks) awake += !brick->frozen && brick->body->isActive() ? 1 : 0;
   ++w.cost.steps;
-  ++w.cost.bullet_steps;
-  w.cost.awake_brick_steps += awake;
-  w.checkAfterStep();
+  // Plain Bullet (mode none) is the baseline and always steps; with a stability
+  // model, a world where nothing is awake has nothing for Bullet to do.
+  const bool step_bullet = !w.model || awake > 0;
+  if (step_bullet) {
+    // maxSubSteps = 0: exactly one step of exactly time_step, no interpolation.
+    w.world->stepSimulation(w.options.time_step, 0, w.options.time_step);
+    ++w.cost.bullet_steps;
+    w.cost.awake_brick_steps += awake;
+    w.checkAfterStep();
+  }
+  if (w.model) w.runStabilityModel(step_bullet);
 }
 
 double BrickWorld::time() const { return impl_->time(); }
@@ -458,6 +692,28 @@ bool BrickWorld::find(const std::string& id, BrickSnapshot* brick) const {
   auto found = impl_->by_id.find(id);
   if (found == impl_->by_id.end()) return false;
   if (brick) *brick = impl_->snapshotOf(*found->second);
+  return true;
+}
+
+bool BrickWorld::supportGeometry(const std::string& id, SupportGeometry* geometry) const {
+  auto found = impl_->by_id.find(id);
+  BrickStability stability;
+  if (found == impl_->by_id.end() || !impl_->model ||
+      !impl_->model->describe(found->second->serial, &stability))
+    return false;
+  SupportGeometry result;
+  for (const SupportPatch& patch : stability.supports) {
+    SupportGeometry::Patch out;
+    out.supporter = impl_->nameOf(patch.supporter);
+    for (const Eigen::Vector2d& corner : patch.hull)
+      out.polygon.emplace_back(corner.x(), corner.y(), patch.height);
+    result.patches.push_back(std::move(out));
+  }
+  for (const Eigen::Vector2d& corner : stability.combined_hull)
+    result.combined_hull.emplace_back(corner.x(), corner.y(), stability.support_height);
+  result.com_above = stability.com_above;
+  result.margin = stability.margin;
+  *geometry = std::move(result);
   return true;
 }
 

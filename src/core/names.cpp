@@ -63,9 +63,9 @@ Status parseStabilityMode(const std::string& text, StabilityMode* mode) {
 }
 
 Status checkStabilityModeAvailable(StabilityMode mode) {
-  if (mode == StabilityMode::kNone) return Status::success();
+  if (mode == StabilityMode::kNone || mode == StabilityMode::kCom) return Status::success();
   return Status::error(std::string("stability mode '") + toString(mode) +
-                       "' is not available in this version; available: none");
+                       "' is not available in this version; available: none, com");
 }
 
 }  // namespace brick_stack_sim

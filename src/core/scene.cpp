@@ -152,7 +152,7 @@ ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
   return brick;
 }
 
-void runGenerator(const YAML::Node& node, const BrickTypeLibrary& types,
+void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
                   std::vector<ScheduledBrick>* bricks) {
   const std::string where = "generator";
   if (!node.IsMap() || !node["name"]) fail(where, "needs a 'name'");
@@ -171,7 +171,31 @@ void runGenerator(const YAML::Node& node, const BrickTypeLibrary& types,
       fail(where, generated.message);
     return;
   }
-  fail(where, "unknown generator '" + name + "' (available: tower)");
+  if (name == "harmonic") {
+    requireKnownKeys(node, where, {"name", "bricks", "factor", "type", "start", "interval"});
+    HarmonicParams params;
+    params.bricks = readInt(node, "bricks", where, params.bricks);
+    params.factor = readNumber(node, "factor", where, params.factor);
+    params.type = readString(node, "type", where);
+    params.start = readNumber(node, "start", where, params.start);
+    params.interval = readNumber(node, "interval", where, params.interval);
+    if (Status generated = generateHarmonic(params, table, types, bricks); !generated)
+      fail(where, generated.message);
+    return;
+  }
+  if (name == "slant_tower") {
+    requireKnownKeys(node, where, {"name", "layers", "offset", "type", "start", "interval"});
+    SlantTowerParams params;
+    params.layers = readInt(node, "layers", where, params.layers);
+    params.offset = readNumber(node, "offset", where, params.offset);
+    params.type = readString(node, "type", where);
+    params.start = readNumber(node, "start", where, params.start);
+    params.interval = readNumber(node, "interval", where, params.interval);
+    if (Status generated = generateSlantTower(params, types, bricks); !generated)
+      fail(where, generated.message);
+    return;
+  }
+  fail(where, "unknown generator '" + name + "' (available: tower, harmonic, slant_tower)");
 }
 
 bool isFile(const std::string& path) {
@@ -188,6 +212,20 @@ std::string stem(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+Status checkTiming(const char* generator, double start, double interval) {
+  if (!std::isfinite(start) || start < 0.0 || !std::isfinite(interval) || interval < 0.0)
+    return Status::error(std::string(generator) + " start and interval must be finite and >= 0 s");
+  return Status::success();
+}
+
+const BrickType* generatorType(const std::string& requested, const BrickTypeLibrary& types) {
+  return types.find(requested.empty() ? types.defaultType() : requested);
+}
+
+}  // namespace
+
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
                      std::vector<ScheduledBrick>* bricks) {
   if (params.layers < 1 || params.layers > 10000)
@@ -196,12 +234,12 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   if (params.bricks_per_layer != 2 && params.bricks_per_layer != 3)
     return Status::error("tower bricks_per_layer = " + std::to_string(params.bricks_per_layer) +
                          ": must be 2 or 3");
-  if (!std::isfinite(params.start) || params.start < 0.0 || !std::isfinite(params.interval) ||
-      params.interval < 0.0 || !std::isfinite(params.gap) || params.gap < 0.0)
-    return Status::error("tower start, interval and gap must be finite and >= 0");
-  const std::string type_name = params.type.empty() ? types.defaultType() : params.type;
-  const BrickType* type = types.find(type_name);
-  if (!type) return Status::error("tower type '" + type_name + "' is not a known brick type");
+  if (Status timing = checkTiming("tower", params.start, params.interval); !timing) return timing;
+  if (!std::isfinite(params.gap) || params.gap < 0.0)
+    return Status::error("tower gap must be finite and >= 0 m");
+  const BrickType* type = generatorType(params.type, types);
+  if (!type) return Status::error("tower type '" + params.type + "' is not a known brick type");
+  const std::string& type_name = type->name;
 
   const double length = type->size.x(), width = type->size.y(), height = type->size.z();
   // Bricks of a layer lie under the ends of the crosswise layer above.
@@ -230,6 +268,61 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   return Status::success();
 }
 
+Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
+                        const BrickTypeLibrary& types, std::vector<ScheduledBrick>* bricks) {
+  if (params.bricks < 1 || params.bricks > 1000)
+    return Status::error("harmonic bricks = " + std::to_string(params.bricks) +
+                         ": must be in [1, 1000]");
+  if (!std::isfinite(params.factor) || params.factor < 0.0 || params.factor > 2.0)
+    return Status::error("harmonic factor must be in [0, 2]");
+  if (Status timing = checkTiming("harmonic", params.start, params.interval); !timing)
+    return timing;
+  const BrickType* type = generatorType(params.type, types);
+  if (!type) return Status::error("harmonic type '" + params.type + "' is not a known brick type");
+  const double length = type->size.x(), height = type->size.z();
+  const int n = params.bricks;
+  // Right ends from the bottom up: the table edge, then one overhang per brick.
+  double right_end = 0.5 * table.size.x();
+  int index = static_cast<int>(bricks->size());
+  for (int from_top = n; from_top >= 1; --from_top) {
+    right_end += params.factor * length / (2.0 * from_top);
+    const int layer = n - from_top;
+    ScheduledBrick brick;
+    brick.placement.id = "b" + std::to_string(index++);
+    brick.placement.type = type->name;
+    brick.placement.pose.translation() =
+        Eigen::Vector3d(right_end - 0.5 * length, 0.0, (layer + 0.5) * height);
+    brick.at = params.start + params.interval * layer;
+    bricks->push_back(brick);
+  }
+  return Status::success();
+}
+
+Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
+                          std::vector<ScheduledBrick>* bricks) {
+  if (params.layers < 1 || params.layers > 10000)
+    return Status::error("slant_tower layers = " + std::to_string(params.layers) +
+                         ": must be in [1, 10000]");
+  if (!std::isfinite(params.offset) || std::abs(params.offset) > 1.0)
+    return Status::error("slant_tower offset must be finite and at most 1 m");
+  if (Status timing = checkTiming("slant_tower", params.start, params.interval); !timing)
+    return timing;
+  const BrickType* type = generatorType(params.type, types);
+  if (!type)
+    return Status::error("slant_tower type '" + params.type + "' is not a known brick type");
+  int index = static_cast<int>(bricks->size());
+  for (int layer = 0; layer < params.layers; ++layer) {
+    ScheduledBrick brick;
+    brick.placement.id = "b" + std::to_string(index++);
+    brick.placement.type = type->name;
+    brick.placement.pose.translation() =
+        Eigen::Vector3d(layer * params.offset, 0.0, (layer + 0.5) * type->size.z());
+    brick.at = params.start + params.interval * layer;
+    bricks->push_back(brick);
+  }
+  return Status::success();
+}
+
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types) {
   for (const BrickType& type : scene.types) {
     if (Status added = types->add(type); !added) return added;
@@ -253,7 +346,9 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     }
     BrickTypeLibrary all_types = types;
     if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);
-    if (root["generator"]) runGenerator(root["generator"], all_types, &result.bricks);
+    if (root["generator"])
+      runGenerator(root["generator"], result.table.value_or(TableOptions()), all_types,
+                   &result.bricks);
     if (root["bricks"]) {
       if (!root["bricks"].IsSequence()) fail("bricks", "expected a list");
       std::size_t index = 0;

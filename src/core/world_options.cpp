@@ -57,6 +57,23 @@ Status validate(const WorldOptions& o) {
   if (!nonNegative(t.friction)) return bad("table/friction", t.friction, "must be >= 0");
   if (!nonNegative(t.restitution) || t.restitution > 1.0)
     return bad("table/restitution", t.restitution, "must be in [0, 1]");
+  const StabilityOptions& s = o.stability;
+  if (!positive(s.rest_linear_speed))
+    return bad("stability/rest_linear_speed", s.rest_linear_speed, "must be > 0 m/s");
+  if (!positive(s.rest_angular_speed))
+    return bad("stability/rest_angular_speed", s.rest_angular_speed, "must be > 0 rad/s");
+  if (!nonNegative(s.rest_time)) return bad("stability/rest_time", s.rest_time, "must be >= 0 s");
+  if (!positive(s.impact_speed))
+    return bad("stability/impact_speed", s.impact_speed, "must be > 0 m/s");
+  if (!positive(s.support_normal_tolerance) || s.support_normal_tolerance >= M_PI / 2)
+    return bad("stability/support_normal_tolerance", s.support_normal_tolerance,
+               "must be in (0, pi/2) rad");
+  if (!nonNegative(s.flush_angle) || s.flush_angle > 0.1)
+    return bad("stability/flush_angle", s.flush_angle, "must be in [0, 0.1] rad");
+  if (!positive(s.contact_distance) || s.contact_distance > 0.01)
+    return bad("stability/contact_distance", s.contact_distance, "must be in (0, 0.01] m");
+  if (!nonNegative(s.min_margin) || s.min_margin > 0.01)
+    return bad("stability/min_margin", s.min_margin, "must be in [0, 0.01] m");
   return Status::success();
 }
 

@@ -125,7 +125,7 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
       {{"--scene", "x", "--iterations", "2.5"}, "--iterations"},
       {{"--scene", "x", "--iterations", "0"}, "solver_iterations"},
       {{"--scene", "x", "--mode", "magic"}, "magic"},
-      {{"--scene", "x", "--mode", "com"}, "not available"},
+      {{"--scene", "x", "--mode", "equilibrium"}, "not available"},
       {{"--scene", "x", "--duration", "-3"}, "--duration"},
       {{"--mode", "none"}, "--scene is required"},
       {{"tower10"}, "unexpected argument"},

@@ -131,7 +131,8 @@ TEST(InvalidOptions, EveryBadSettingIsNamed) {
       {"table/height", [](WorldOptions* o) { o->table.height = kNaN; }},
       {"table/friction", [](WorldOptions* o) { o->table.friction = -0.1; }},
       {"overlap_tolerance", [](WorldOptions* o) { o->overlap_tolerance = kNaN; }},
-      {"stability mode 'com'", [](WorldOptions* o) { o->mode = StabilityMode::kCom; }},
+      {"stability mode 'equilibrium'",
+       [](WorldOptions* o) { o->mode = StabilityMode::kEquilibrium; }},
   };
   for (const Case& c : cases) {
     WorldOptions options;

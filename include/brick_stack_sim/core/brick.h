@@ -49,4 +49,17 @@ struct BrickSnapshot {
   unsigned serial = 0;     ///< Order of placement since the last reset, from 0; never reused.
 };
 
+/// Where a brick rests, for markers: each support patch and the combined hull
+/// as polygons in the world (counter-clockwise seen from above) [m].
+struct SupportGeometry {
+  struct Patch {
+    std::string supporter;  ///< Brick id, "table" or "floor".
+    std::vector<Eigen::Vector3d> polygon;
+  };
+  std::vector<Patch> patches;
+  std::vector<Eigen::Vector3d> combined_hull;  ///< At the mean support height.
+  Eigen::Vector3d com_above = Eigen::Vector3d::Zero();
+  double margin = 0.0;  ///< [m], < 0: the COM-above projection is outside.
+};
+
 }  // namespace brick_stack_sim

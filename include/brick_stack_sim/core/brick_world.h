@@ -21,10 +21,13 @@ struct CostCounters {
   std::uint64_t bullet_steps = 0;       ///< Steps that advanced Bullet.
   std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
+  std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
 };
 
 /// Bricks on a table, simulated by Bullet in double precision with a fixed
-/// time step. Every request is validated first: a refused request returns an
+/// time step, with an optional stability model on top (WorldOptions::mode)
+/// that freezes bricks resting stably and wakes them when their load leaves
+/// their support. Every request is validated first: a refused request returns an
 /// error Status and leaves the world exactly as it was. Bricks are kept in
 /// placement order, so the same calls in the same order give bit-identical
 /// results.
@@ -63,6 +66,9 @@ class BrickWorld {
   std::vector<BrickSnapshot> snapshot() const;
   /// One brick; false when the id is unknown.
   bool find(const std::string& id, BrickSnapshot* brick) const;
+  /// The support patches of a brick as the stability model sees them; false
+  /// when the id is unknown or the model knows nothing of it (mode none).
+  bool supportGeometry(const std::string& id, SupportGeometry* geometry) const;
   /// Events since the last call, oldest first.
   std::vector<SimEvent> takeEvents();
 

@@ -36,6 +36,28 @@ struct TowerParams {
   double gap = 0.0;          ///< Vertical clearance between layers at placement [m].
 };
 
+/// Parameters of the `harmonic` generator (DESIGN.md section 5): n bricks
+/// stacked over the table's +x edge, brick i from the top overhanging the one
+/// below (the table edge for the lowest) by factor * L / (2 i). Statics: it
+/// stands for factor < 1 and falls for factor > 1.
+struct HarmonicParams {
+  int bricks = 4;
+  double factor = 0.95;
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s] between placements, bottom brick first.
+};
+
+/// Parameters of the `slant_tower` generator: one brick per layer along x,
+/// each layer shifted by `offset` in +x from the one below.
+struct SlantTowerParams {
+  int layers = 10;
+  double offset = 0.01;  ///< [m]
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s]
+};
+
 /// Parses a scene from YAML text. `types` resolves the generators' brick sizes
 /// (together with the scene's own types); `name` is used when the yaml has none.
 Status parseScene(const std::string& yaml_text, const std::string& name,
@@ -48,6 +70,14 @@ Status loadScene(const std::string& name_or_path, const std::vector<std::string>
 /// layer resting across the ends of the one below.
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
                      std::vector<ScheduledBrick>* bricks);
+
+/// Appends a harmonic stack at the +x edge of `table`.
+Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
+                        const BrickTypeLibrary& types, std::vector<ScheduledBrick>* bricks);
+
+/// Appends a slant tower starting at the table centre.
+Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
+                          std::vector<ScheduledBrick>* bricks);
 
 /// Adds the scene's own types to `types` (the scene's win on a name clash).
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);

@@ -17,6 +17,30 @@ struct TableOptions {
   double restitution = 0.0;        ///< [-]
 };
 
+/// Thresholds of the stack stability layer (mode com); config/stability.yaml.
+struct StabilityOptions {
+  /// A brick slower than both of these for `rest_time` is at rest and may
+  /// join the stack (thesis 3.3.2). Bullet's own resting jitter at 1 ms steps
+  /// is well below them; a brick still settling after a drop is above.
+  double rest_linear_speed = 0.005;  ///< [m/s]
+  double rest_angular_speed = 0.05;  ///< [rad/s]
+  double rest_time = 0.02;           ///< [s]
+  /// Contacts closing faster than this are impacts, not support (thesis 3.3.1) [m/s].
+  double impact_speed = 0.05;
+  /// A contact supports only when its normal is within this angle of vertical
+  /// [rad]; steeper contacts are leaning, for another model.
+  double support_normal_tolerance = 0.26;
+  /// Faces parallel within this angle rest flush: the patch is their whole
+  /// overlap, not just the points Bullet reports [rad]. 2 mrad is 0.23 mm
+  /// of height over a KAPLA length.
+  double flush_angle = 0.002;
+  /// Contact points farther apart than this do not touch [m].
+  double contact_distance = 1e-4;
+  /// Stable means: the COM-above projection lies deeper inside the support
+  /// hull than this [m]. 0: strictly inside.
+  double min_margin = 0.0;
+};
+
 /// Everything that shapes the simulation of a world. The defaults are chosen
 /// for KAPLA-sized bricks (8 mm thick); see brick_world.cpp for why.
 struct WorldOptions {
@@ -47,6 +71,7 @@ struct WorldOptions {
   double max_angular_speed = 500.0;  ///< [rad/s]
 
   TableOptions table;
+  StabilityOptions stability;
 };
 
 /// Checks every field; the message names the first bad one and its value.
