@@ -6,7 +6,7 @@ set -euo pipefail
 build_packages=(
   build-essential cmake pkg-config
   catkin ros-base-dev ros-message-generation ros-message-runtime rosbash
-  libroscpp-dev librostest-dev python3-rostest python3-rosunit
+  libroscpp-dev libroslib-dev librostest-dev python3-rostest python3-rosunit
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
   libros-rosgraph-msgs-dev libtf2-ros-dev
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs

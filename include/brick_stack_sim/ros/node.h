@@ -1,0 +1,138 @@
+#pragma once
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/PushBrick.h"
+#include "brick_stack_sim/RemoveBrick.h"
+#include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/StepSimulation.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/brick_world.h"
+#include "brick_stack_sim/core/scene_player.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/ros/node_options.h"
+
+namespace brick_stack_sim {
+namespace ros_adapter {
+
+// Names of DESIGN.md section 3, relative to the node's private namespace
+// (`~bricks` is kBricksTopic on a ros::NodeHandle("~")) except the clock.
+constexpr char kBricksTopic[] = "bricks";
+constexpr char kEventsTopic[] = "events";
+constexpr char kMarkersTopic[] = "markers";
+constexpr char kClockTopic[] = "/clock";
+constexpr char kPlaceBrickService[] = "place_brick";
+constexpr char kRemoveBrickService[] = "remove_brick";
+constexpr char kResetService[] = "reset";
+constexpr char kGetBricksService[] = "get_bricks";
+constexpr char kPushBrickService[] = "push_brick";
+constexpr char kPauseService[] = "pause";
+constexpr char kStepService[] = "step";
+
+/// Most steps one ~step request may ask for: 1e6 steps are 1000 s of sim time
+/// at the default step, and the single-threaded node answers nothing meanwhile.
+constexpr unsigned kMaxStepsPerRequest = 1000000;
+/// Events queued per subscriber before the oldest is dropped: a reset of a
+/// large scene emits a removed and a spawned event per brick in one burst.
+constexpr int kEventQueueSize = 10000;
+
+/// The ROS face of a BrickWorld: publishes its state, serves its requests and
+/// steps it on a wall timer so that sim time follows wall time times
+/// `real_time_factor`. Everything runs in the single ros::spin thread, so
+/// service handlers and steps never interleave. Each request is checked and
+/// then handed to one core call, which changes nothing when it refuses.
+class SimNode {
+ public:
+  /// Creates the world, advertises every topic and service and, when
+  /// options.initial_scene is set, plays that scene; fails (and advertises
+  /// nothing) when the world or the scene cannot be created.
+  static Status create(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
+                       const BrickTypeLibrary& types, std::unique_ptr<SimNode>* node);
+
+  SimNode(const SimNode&) = delete;
+  SimNode& operator=(const SimNode&) = delete;
+
+  /// Sim time [s]; never goes backwards, across resets included.
+  double simTime() const;
+  bool paused() const { return paused_; }
+
+ private:
+  SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
+          const BrickTypeLibrary& types);
+
+  // --- stepping --------------------------------------------------------------
+  void onStepTimer(const ros::WallTimerEvent& event);
+  /// One world step, then the scene's due placements and, when due in sim
+  /// time, the state publication.
+  void stepOnce();
+  /// Restarts the wall/sim time pacing from now (after a pause, a reset, or
+  /// when the world cannot keep up).
+  void restartPacing();
+
+  // --- publishing ------------------------------------------------------------
+  ros::Time stamp() const;
+  void publishEvents();
+  void publishState();
+  void publishClock();
+  void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
+
+  // --- services: one handler each; they always return true so the caller
+  // gets success and message, false would only say "call failed".
+  bool placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& response);
+  bool removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& response);
+  bool reset(ResetScene::Request& request, ResetScene::Response& response);
+  bool getBricks(GetBricks::Request& request, GetBricks::Response& response);
+  bool pushBrick(PushBrick::Request& request, PushBrick::Response& response);
+  bool pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  bool step(StepSimulation::Request& request, StepSimulation::Response& response);
+
+  /// Empties the table (scene empty) or replaces the world's bricks by the
+  /// scene's; on failure the world is unchanged. `scheduled` receives the
+  /// scene's brick count, `message` what was done.
+  Status resetWorld(const std::string& scene_name, unsigned* scheduled, std::string* message);
+  /// Logs a refused request at INFO and fills the response fields.
+  template <typename Response>
+  bool refuse(const char* service, const Status& status, Response* response);
+
+  NodeOptions options_;
+  BrickTypeLibrary types_;  ///< The configured types; scenes add theirs to a copy.
+  std::unique_ptr<BrickWorld> world_;
+  /// True while world_ was made for a scene's own table or types, so that an
+  /// empty reset goes back to the configured world.
+  bool scene_world_ = false;
+  /// Sim time of the worlds replaced by scene worlds, so published time keeps
+  /// running when a scene brings its own table [s].
+  double time_offset_ = 0.0;
+  ScenePlayer player_;
+
+  bool paused_ = false;
+  bool state_dirty_ = true;         ///< Something changed that ~bricks has not shown yet.
+  double next_publish_time_ = 0.0;  ///< Sim time of the next ~bricks [s].
+  ros::WallTime pacing_wall_start_;
+  double pacing_sim_start_ = 0.0;  ///< [s]
+  /// tf refuses a second transform of a frame with the same stamp; while the
+  /// clock stands still (paused, sim time stamps) only new frames are sent.
+  ros::Time last_tf_stamp_;
+  std::set<std::string> tf_sent_at_last_stamp_;
+
+  ros::NodeHandle node_handle_;
+  ros::Publisher bricks_publisher_;
+  ros::Publisher events_publisher_;
+  ros::Publisher markers_publisher_;
+  ros::Publisher clock_publisher_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  std::vector<ros::ServiceServer> services_;
+  ros::WallTimer step_timer_;
+};
+
+}  // namespace ros_adapter
+}  // namespace brick_stack_sim

@@ -1,0 +1,386 @@
+#include "brick_stack_sim/ros/node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <rosgraph_msgs/Clock.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "brick_stack_sim/BrickArray.h"
+#include "brick_stack_sim/StabilityEvent.h"
+#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/ros/conversions.h"
+#include "brick_stack_sim/ros/markers.h"
+
+namespace brick_stack_sim {
+namespace ros_adapter {
+
+namespace {
+
+/// Wall time [s] the world may fall behind real_time_factor before the node
+/// gives up catching up: longer than any scheduling hiccup, short enough that
+/// a user sees sim time slow down rather than jump.
+constexpr double kMaxLag = 0.1;
+
+std::string formatTime(double t) {
+  std::ostringstream text;
+  text.precision(3);
+  text << std::fixed << "t=" << t << " s";
+  return text.str();
+}
+
+}  // namespace
+
+Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
+                       const BrickTypeLibrary& types, std::unique_ptr<SimNode>* node) {
+  if (Status valid = validate(options); !valid) return valid;
+  if (types.empty()) return Status::error("no brick types: check ~types_urdf");
+  std::unique_ptr<SimNode> result(new SimNode(private_node_handle, options, types));
+  if (Status created = BrickWorld::create(options.world, types, &result->world_); !created)
+    return created;
+
+  SimNode& self = *result;
+  ros::NodeHandle& nh = self.node_handle_;
+  self.bricks_publisher_ = nh.advertise<BrickArray>(kBricksTopic, 10);
+  self.events_publisher_ = nh.advertise<StabilityEvent>(kEventsTopic, kEventQueueSize);
+  self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(kMarkersTopic, 2);
+  if (options.publish_clock)
+    self.clock_publisher_ = nh.advertise<rosgraph_msgs::Clock>(kClockTopic, 10);
+
+  if (!options.initial_scene.empty()) {
+    unsigned scheduled = 0;
+    std::string message;
+    if (Status played = self.resetWorld(options.initial_scene, &scheduled, &message); !played)
+      return Status::error("parameter ~scene = '" + options.initial_scene + "': " + played.message);
+    ROS_INFO("%s", message.c_str());
+  }
+
+  self.services_.push_back(nh.advertiseService(kPlaceBrickService, &SimNode::placeBrick, &self));
+  self.services_.push_back(nh.advertiseService(kRemoveBrickService, &SimNode::removeBrick, &self));
+  self.services_.push_back(nh.advertiseService(kResetService, &SimNode::reset, &self));
+  self.services_.push_back(nh.advertiseService(kGetBricksService, &SimNode::getBricks, &self));
+  self.services_.push_back(nh.advertiseService(kPushBrickService, &SimNode::pushBrick, &self));
+  self.services_.push_back(nh.advertiseService(kPauseService, &SimNode::pause, &self));
+  self.services_.push_back(nh.advertiseService(kStepService, &SimNode::step, &self));
+
+  self.restartPacing();
+  self.step_timer_ = nh.createWallTimer(ros::WallDuration(1.0 / options.step_timer_rate),
+                                        &SimNode::onStepTimer, &self);
+  ROS_INFO(
+      "brick_sim: mode %s, time step %g s, %d iterations, real time factor %g%s, types: %zu "
+      "(default %s)",
+      toString(options.world.mode), options.world.time_step, options.world.solver_iterations,
+      options.real_time_factor, options.real_time_factor == 0.0 ? " (as fast as possible)" : "",
+      types.names().size(), types.defaultType().c_str());
+  *node = std::move(result);
+  return Status::success();
+}
+
+SimNode::SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
+                 const BrickTypeLibrary& types)
+    : options_(options), types_(types), node_handle_(private_node_handle) {}
+
+double SimNode::simTime() const { return time_offset_ + world_->time(); }
+
+// --- stepping ------------------------------------------------------------------
+
+void SimNode::restartPacing() {
+  pacing_wall_start_ = ros::WallTime::now();
+  pacing_sim_start_ = simTime();
+}
+
+void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
+  if (!paused_) {
+    const ros::WallTime start = ros::WallTime::now();
+    // Stepping stops after this share of the timer period so that services
+    // are still answered when the world is too heavy for real time.
+    const ros::WallTime deadline =
+        start + ros::WallDuration(options_.max_step_budget / options_.step_timer_rate);
+    const double time_step = options_.world.time_step;
+    double wanted = options_.max_steps_per_tick;
+    if (options_.real_time_factor > 0.0) {
+      const double target =
+          pacing_sim_start_ + (start - pacing_wall_start_).toSec() * options_.real_time_factor;
+      // The small epsilon keeps a step that is due "exactly now" from slipping
+      // to the next tick through rounding.
+      wanted = std::max(0.0, std::floor((target - simTime()) / time_step + 1e-6));
+    }
+    const long limit = static_cast<long>(std::min<double>(wanted, options_.max_steps_per_tick));
+    long done = 0;
+    while (done < limit) {
+      stepOnce();
+      ++done;
+      if (ros::WallTime::now() > deadline) break;
+    }
+    const double lag = (wanted - done) * time_step / std::max(options_.real_time_factor, 1e-9);
+    if (options_.real_time_factor > 0.0 && lag > kMaxLag) {
+      // A late tick is made up by the next ones; a lag this long means the
+      // world is too heavy, and catching up would only come back as a burst:
+      // keep the pace from here on.
+      ROS_WARN_THROTTLE(10.0,
+                        "the world cannot keep up with real_time_factor %g (%.0f steps behind); "
+                        "sim time runs slower than requested",
+                        options_.real_time_factor, wanted - done);
+      restartPacing();
+    }
+    if (done > 0) publishClock();
+  }
+  publishEvents();
+  if (state_dirty_) publishState();
+}
+
+void SimNode::stepOnce() {
+  world_->step();
+  if (!player_.done()) logRefusedPlacements(player_.placeDue(world_.get()));
+  const double now = simTime();
+  if (now + 1e-9 >= next_publish_time_) {
+    publishClock();
+    publishState();
+    const double period = 1.0 / options_.publish_rate;
+    next_publish_time_ += period;
+    if (next_publish_time_ <= now) next_publish_time_ = now + period;
+  }
+}
+
+// --- publishing ------------------------------------------------------------------
+
+ros::Time SimNode::stamp() const {
+  return options_.publish_clock ? ros::Time(simTime()) : ros::Time::now();
+}
+
+void SimNode::publishClock() {
+  if (!options_.publish_clock) return;
+  rosgraph_msgs::Clock clock;
+  clock.clock = ros::Time(simTime());
+  clock_publisher_.publish(clock);
+}
+
+void SimNode::publishEvents() {
+  for (const SimEvent& event : world_->takeEvents()) {
+    StabilityEvent msg = toMsg(event);
+    const double t = time_offset_ + event.time;
+    msg.header.stamp =
+        options_.publish_clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
+    msg.header.frame_id = options_.frame_id;
+    if (event.kind == SimEventKind::kNonFinite) {
+      ROS_WARN("brick %s: Bullet produced a non-finite value at %s; restored (%s)",
+               event.brick_id.c_str(), formatTime(t).c_str(), event.reason.c_str());
+    }
+    events_publisher_.publish(msg);
+  }
+}
+
+void SimNode::publishState() {
+  state_dirty_ = false;
+  const ros::Time now = stamp();
+  const std::vector<BrickSnapshot> bricks = world_->snapshot();
+
+  BrickArray array;
+  array.header.stamp = now;
+  array.header.frame_id = options_.frame_id;
+  array.bricks.reserve(bricks.size());
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  transforms.reserve(bricks.size());
+  if (now != last_tf_stamp_) tf_sent_at_last_stamp_.clear();
+  last_tf_stamp_ = now;
+  std::vector<BrickSnapshot> finite;
+  finite.reserve(bricks.size());
+  for (const BrickSnapshot& brick : bricks) {
+    Brick msg;
+    if (Status converted = toMsg(brick, &msg); !converted) {
+      ROS_WARN_THROTTLE(5.0, "not published: %s", converted.message.c_str());
+      continue;
+    }
+    array.bricks.push_back(std::move(msg));
+    if (tf_sent_at_last_stamp_.insert(brick.id).second) {
+      geometry_msgs::TransformStamped transform;
+      transform.header.stamp = now;
+      transform.header.frame_id = options_.frame_id;
+      transform.child_frame_id = brick.id;
+      transform.transform = toTransformMsg(brick.pose);
+      transforms.push_back(transform);
+    }
+    finite.push_back(brick);
+  }
+  bricks_publisher_.publish(array);
+  if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
+  // Markers cost a message per brick: built only for someone who looks.
+  if (markers_publisher_.getNumSubscribers() > 0)
+    markers_publisher_.publish(makeBrickMarkers(finite, options_.frame_id, now));
+}
+
+void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused) {
+  for (const RefusedPlacement& placement : refused) {
+    ROS_WARN("scene placement of %s at %s refused: %s", placement.id.c_str(),
+             formatTime(time_offset_ + placement.t).c_str(), placement.reason.c_str());
+  }
+}
+
+// --- services --------------------------------------------------------------------
+
+template <typename Response>
+bool SimNode::refuse(const char* service, const Status& status, Response* response) {
+  ROS_INFO("~%s refused: %s", service, status.message.c_str());
+  response->success = false;
+  response->message = status.message;
+  return true;
+}
+
+bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& response) {
+  BrickPlacement placement;
+  if (Status converted = fromMsg(request, &placement); !converted)
+    return refuse(kPlaceBrickService, converted, &response);
+  std::string id;
+  if (Status added = world_->addBrick(placement, &id); !added)
+    return refuse(kPlaceBrickService, added, &response);
+  response.success = true;
+  response.id = id;
+  response.message = "placed " + id + " at " + formatTime(simTime());
+  state_dirty_ = true;
+  publishEvents();
+  return true;
+}
+
+bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& response) {
+  if (Status removed = world_->removeBrick(request.id); !removed)
+    return refuse(kRemoveBrickService, removed, &response);
+  response.success = true;
+  response.message = "removed " + request.id;
+  state_dirty_ = true;
+  publishEvents();
+  return true;
+}
+
+Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
+                           std::string* message) {
+  // Everything that can fail happens before the world is touched.
+  Scene scene;
+  if (!scene_name.empty()) {
+    if (Status loaded = loadScene(scene_name, options_.scene_dirs, types_, &scene); !loaded)
+      return loaded;
+  }
+  const bool needs_own_world = scene.table.has_value() || !scene.types.empty();
+  std::unique_ptr<BrickWorld> replacement;
+  if (needs_own_world || scene_world_) {
+    WorldOptions world_options = options_.world;
+    if (scene.table) world_options.table = *scene.table;
+    BrickTypeLibrary types = types_;
+    if (Status merged = mergeSceneTypes(scene, &types); !merged)
+      return Status::error("scene '" + scene_name + "': " + merged.message);
+    if (Status created = BrickWorld::create(world_options, types, &replacement); !created)
+      return Status::error("scene '" + scene_name + "': " + created.message);
+  }
+
+  world_->clear();
+  publishEvents();  // the removed events, stamped in the old world's time
+  if (replacement) {
+    time_offset_ += world_->time();
+    world_ = std::move(replacement);
+    scene_world_ = needs_own_world;
+  }
+  player_ = ScenePlayer(scene.bricks, world_->time());
+  const std::vector<RefusedPlacement> refused = player_.placeDue(world_.get());
+  logRefusedPlacements(refused);
+  publishEvents();
+  state_dirty_ = true;
+  next_publish_time_ = simTime();
+  restartPacing();
+
+  *scheduled = static_cast<unsigned>(scene.bricks.size());
+  std::ostringstream text;
+  if (scene_name.empty()) {
+    text << "cleared the table at " << formatTime(simTime());
+  } else {
+    text << "playing scene '" << (scene.name.empty() ? scene_name : scene.name) << "' from "
+         << formatTime(simTime()) << ": " << scene.bricks.size() << " bricks scheduled";
+    if (!refused.empty()) text << ", " << refused.size() << " refused at once (see the log)";
+  }
+  *message = text.str();
+  return Status::success();
+}
+
+bool SimNode::reset(ResetScene::Request& request, ResetScene::Response& response) {
+  unsigned scheduled = 0;
+  std::string message;
+  if (Status done = resetWorld(request.scene, &scheduled, &message); !done)
+    return refuse(kResetService, done, &response);
+  ROS_INFO("%s", message.c_str());
+  response.success = true;
+  response.message = message;
+  response.bricks_scheduled = scheduled;
+  return true;
+}
+
+bool SimNode::getBricks(GetBricks::Request& /*request*/, GetBricks::Response& response) {
+  response.header.stamp = stamp();
+  response.header.frame_id = options_.frame_id;
+  std::size_t left_out = 0;
+  for (const BrickSnapshot& brick : world_->snapshot()) {
+    Brick msg;
+    if (Status converted = toMsg(brick, &msg); !converted) {
+      ROS_WARN_THROTTLE(5.0, "not published: %s", converted.message.c_str());
+      ++left_out;
+      continue;
+    }
+    response.bricks.push_back(std::move(msg));
+  }
+  response.success = true;
+  response.message = std::to_string(response.bricks.size()) + " bricks at " + formatTime(simTime());
+  if (left_out > 0) response.message += "; " + std::to_string(left_out) + " left out: not finite";
+  return true;
+}
+
+bool SimNode::pushBrick(PushBrick::Request& request, PushBrick::Response& response) {
+  Eigen::Vector3d impulse;
+  Eigen::Vector3d point;
+  if (Status converted = fromMsg(request, &impulse, &point); !converted)
+    return refuse(kPushBrickService, converted, &response);
+  if (Status pushed = world_->applyImpulse(request.id, impulse, point); !pushed)
+    return refuse(kPushBrickService, pushed, &response);
+  response.success = true;
+  response.message = "pushed " + request.id;
+  state_dirty_ = true;
+  publishEvents();
+  return true;
+}
+
+bool SimNode::pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response) {
+  response.success = true;
+  if (request.data == paused_) {
+    response.message = paused_ ? "already paused" : "already running";
+    return true;
+  }
+  paused_ = request.data;
+  if (!paused_) restartPacing();  // wall time spent paused is not owed to the world
+  response.message = (paused_ ? "paused at " : "resumed at ") + formatTime(simTime());
+  ROS_INFO("%s", response.message.c_str());
+  return true;
+}
+
+bool SimNode::step(StepSimulation::Request& request, StepSimulation::Response& response) {
+  response.sim_time = simTime();
+  if (!paused_)
+    return refuse(kStepService,
+                  Status::error("the simulation is running: pause it with ~pause first"),
+                  &response);
+  if (request.steps == 0)
+    return refuse(kStepService, Status::error("steps = 0: must be at least 1"), &response);
+  if (request.steps > kMaxStepsPerRequest)
+    return refuse(kStepService,
+                  Status::error("steps = " + std::to_string(request.steps) + ": at most " +
+                                std::to_string(kMaxStepsPerRequest) + " per request"),
+                  &response);
+  for (unsigned i = 0; i < request.steps; ++i) stepOnce();
+  publishClock();
+  publishEvents();
+  publishState();
+  response.sim_time = simTime();
+  response.success = true;
+  response.message = "stepped " + std::to_string(request.steps) + " to " + formatTime(simTime());
+  return true;
+}
+
+}  // namespace ros_adapter
+}  // namespace brick_stack_sim

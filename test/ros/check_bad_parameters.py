@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""Starts brick_stack_sim_node with one bad private parameter at a time and
+checks that it exits non-zero with a message naming that parameter; a control
+run with good parameters must keep running, so the test can tell the two apart."""
+
+import os
+import subprocess
+import time
+import unittest
+
+import rospkg
+import rostest
+from roslib.packages import find_node
+
+PKG = "brick_stack_sim"
+
+
+class BadParameters(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        found = find_node(PKG, "brick_stack_sim_node")
+        assert found, "brick_stack_sim_node not built"
+        cls.binary = found[0]
+        share = rospkg.RosPack().get_path(PKG)
+        cls.data = [
+            "_types_urdf:=" + os.path.join(share, "urdf", "bricks.urdf"),
+            "_materials_yaml:=" + os.path.join(share, "config", "bricks.yaml"),
+        ]
+        cls.runs = 0
+
+    def start(self, args):
+        BadParameters.runs += 1
+        # A node name of its own per run: its private parameters stay apart.
+        name = "__name:=bad_params_%d" % BadParameters.runs
+        return subprocess.Popen([self.binary, name] + self.data + args, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, universal_newlines=True)
+
+    def check_refused(self, args, *words):
+        process = self.start(args)
+        try:
+            output, _ = process.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.communicate()
+            self.fail("node kept running with %s" % args)
+        self.assertNotEqual(process.returncode, 0, "node exited 0 with %s" % args)
+        for word in words:
+            self.assertIn(word, output, "%s not in the output for %s:\n%s" % (word, args, output))
+
+    def test_negative_time_step(self):
+        self.check_refused(["_time_step:=-1"], "~time_step", "-1")
+
+    def test_time_step_of_wrong_type(self):
+        self.check_refused(["_time_step:=fast"], "~time_step", "fast")
+
+    def test_zero_iterations(self):
+        self.check_refused(["_solver_iterations:=0"], "~solver_iterations")
+
+    def test_unavailable_mode(self):
+        # equilibrium is the mode implemented last (DESIGN.md section 2).
+        self.check_refused(["_stability/mode:=equilibrium"], "~stability/mode", "not available")
+
+    def test_unknown_mode(self):
+        self.check_refused(["_stability/mode:=magic"], "~stability/mode", "magic")
+
+    def test_table_size_not_a_list(self):
+        self.check_refused(["_table/size:=[1.0, 0.5, 0.2]"], "~table/size")
+
+    def test_missing_urdf(self):
+        self.check_refused(["_types_urdf:=/nonexistent/bricks.urdf"], "/nonexistent/bricks.urdf")
+
+    def test_unknown_initial_scene(self):
+        self.check_refused(["_scene:=no_such_scene_5678"], "~scene", "no_such_scene_5678")
+
+    def test_good_parameters_keep_running(self):
+        process = self.start(["_time_step:=0.001"])
+        try:
+            time.sleep(3.0)
+            self.assertIsNone(process.poll(), "node with good parameters exited:\n%s"
+                              % (process.communicate()[0] if process.poll() is not None else ""))
+        finally:
+            if process.poll() is None:
+                process.terminate()
+                process.communicate(timeout=30)
+
+
+if __name__ == "__main__":
+    rostest.rosrun(PKG, "bad_parameters", BadParameters)

@@ -1,0 +1,218 @@
+// Parameters -> NodeOptions with no master: a map stands in for the parameter
+// server, holding the same XML-RPC values the node would read.
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/ros/node_options.h"
+
+namespace brick_stack_sim {
+namespace ros_adapter {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+XmlRpcValue list(std::initializer_list<XmlRpcValue> items) {
+  XmlRpcValue value;
+  value.setSize(static_cast<int>(items.size()));
+  int i = 0;
+  for (const XmlRpcValue& item : items) value[i++] = item;
+  return value;
+}
+
+/// Loads `name` = `value` on top of the defaults and expects a refusal that
+/// names the parameter; returns the message for further checks.
+std::string expectRefused(const std::string& name, const XmlRpcValue& value) {
+  MapParameterReader params;
+  params.set(name, value);
+  NodeOptions options;
+  options.publish_rate = 12.5;  // a marker: a refusal must leave the options alone
+  const Status status = loadNodeOptions(params, &options);
+  EXPECT_FALSE(status.ok) << name << " was accepted";
+  EXPECT_NE(status.message.find("~" + name), std::string::npos)
+      << "message does not name ~" << name << ": " << status.message;
+  EXPECT_EQ(options.publish_rate, 12.5) << "options changed by a refused load";
+  return status.message;
+}
+
+TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
+  MapParameterReader params;
+  NodeOptions options;
+  const Status status = loadNodeOptions(params, &options);
+  ASSERT_TRUE(status.ok) << status.message;
+  const WorldOptions defaults;
+  EXPECT_EQ(options.world.time_step, defaults.time_step);
+  EXPECT_EQ(options.world.solver_iterations, defaults.solver_iterations);
+  EXPECT_EQ(options.world.mode, StabilityMode::kNone);
+  EXPECT_EQ(options.world.table.size, defaults.table.size);
+  EXPECT_EQ(options.frame_id, "world");
+  EXPECT_TRUE(options.scene_dirs.empty());
+  EXPECT_TRUE(validate(options).ok);
+}
+
+TEST(NodeOptions, ReadsEveryParameter) {
+  MapParameterReader params;
+  params.set("time_step", 0.002);
+  params.set("solver_iterations", 30);
+  params.set("gravity", 10);  // an int where a double is expected: YAML writes 10
+  params.set("publish_rate", 50.0);
+  params.set("publish_clock", true);
+  params.set("real_time_factor", 0.0);
+  params.set("frame_id", std::string("map"));
+  params.set("stability/mode", std::string("none"));
+  params.set("sleeping/enabled", false);
+  params.set("sleeping/linear_threshold", 0.01);
+  params.set("sleeping/angular_threshold", 0.1);
+  params.set("sleeping/time", 1.5);
+  params.set("table/size", list({XmlRpcValue(2.0), XmlRpcValue(1)}));
+  params.set("table/thickness", 0.05);
+  params.set("table/height", 0.7);
+  params.set("table/friction", 0.6);
+  params.set("table/restitution", 0.1);
+  params.set("overlap_tolerance", 0.0002);
+  params.set("fall_off_depth", 0.05);
+  params.set("types_urdf", std::string("/x/bricks.urdf"));
+  params.set("materials_yaml", std::string("/x/bricks.yaml"));
+  params.set("scene_dirs", list({XmlRpcValue(std::string("/a")), XmlRpcValue(std::string("/b"))}));
+  params.set("scene", std::string("tower10"));
+  NodeOptions options;
+  const Status status = loadNodeOptions(params, &options);
+  ASSERT_TRUE(status.ok) << status.message;
+  EXPECT_EQ(options.world.time_step, 0.002);
+  EXPECT_EQ(options.world.solver_iterations, 30);
+  EXPECT_EQ(options.world.gravity, 10.0);
+  EXPECT_EQ(options.publish_rate, 50.0);
+  EXPECT_TRUE(options.publish_clock);
+  EXPECT_EQ(options.real_time_factor, 0.0);
+  EXPECT_EQ(options.frame_id, "map");
+  EXPECT_FALSE(options.world.sleeping);
+  EXPECT_EQ(options.world.linear_sleep_threshold, 0.01);
+  EXPECT_EQ(options.world.angular_sleep_threshold, 0.1);
+  EXPECT_EQ(options.world.deactivation_time, 1.5);
+  EXPECT_EQ(options.world.table.size, Eigen::Vector2d(2.0, 1.0));
+  EXPECT_EQ(options.world.table.thickness, 0.05);
+  EXPECT_EQ(options.world.table.height, 0.7);
+  EXPECT_EQ(options.world.table.friction, 0.6);
+  EXPECT_EQ(options.world.table.restitution, 0.1);
+  EXPECT_EQ(options.world.overlap_tolerance, 0.0002);
+  EXPECT_EQ(options.world.fall_off_depth, 0.05);
+  EXPECT_EQ(options.types_urdf, "/x/bricks.urdf");
+  EXPECT_EQ(options.materials_yaml, "/x/bricks.yaml");
+  ASSERT_EQ(options.scene_dirs.size(), 2u);
+  EXPECT_EQ(options.scene_dirs[1], "/b");
+  EXPECT_EQ(options.initial_scene, "tower10");
+}
+
+TEST(NodeOptions, RefusesBadTimeStep) {
+  const std::string message = expectRefused("time_step", -0.001);
+  EXPECT_NE(message.find("-0.001"), std::string::npos) << message;  // the value is named too
+  expectRefused("time_step", 0.0);
+  expectRefused("time_step", std::numeric_limits<double>::quiet_NaN());
+  expectRefused("time_step", std::numeric_limits<double>::infinity());
+  expectRefused("time_step", 5.0);  // tunnels through the table
+}
+
+TEST(NodeOptions, RefusesBadNumbers) {
+  expectRefused("solver_iterations", 0);
+  expectRefused("solver_iterations", -3);
+  expectRefused("gravity", -9.81);
+  expectRefused("gravity", std::numeric_limits<double>::quiet_NaN());
+  expectRefused("publish_rate", -1.0);
+  expectRefused("publish_rate", 0.0);
+  expectRefused("publish_rate", std::numeric_limits<double>::infinity());
+  expectRefused("real_time_factor", -0.5);
+  expectRefused("real_time_factor", std::numeric_limits<double>::quiet_NaN());
+  expectRefused("sleeping/linear_threshold", -0.1);
+  expectRefused("sleeping/angular_threshold", std::numeric_limits<double>::quiet_NaN());
+  expectRefused("sleeping/time", 0.0);
+  expectRefused("table/thickness", 0.0);
+  expectRefused("table/height", -0.75);
+  expectRefused("table/friction", -0.1);
+  expectRefused("table/restitution", 1.5);
+  expectRefused("overlap_tolerance", -1e-4);
+  expectRefused("fall_off_depth", 0.0);
+}
+
+TEST(NodeOptions, RefusesBadStrings) {
+  expectRefused("frame_id", std::string(""));
+  expectRefused("frame_id", std::string("/world"));
+}
+
+TEST(NodeOptions, RefusesUnknownAndUnavailableModes) {
+  const std::string unknown = expectRefused("stability/mode", std::string("magic"));
+  EXPECT_NE(unknown.find("magic"), std::string::npos) << unknown;
+  // Which modes exist grows with the core; whatever it cannot run must be
+  // refused as "not available" (not as unknown), and what it can run accepted.
+  int unavailable = 0;
+  for (StabilityMode mode :
+       {StabilityMode::kNone, StabilityMode::kCom, StabilityMode::kEquilibrium}) {
+    const std::string name = toString(mode);
+    if (checkStabilityModeAvailable(mode).ok) {
+      MapParameterReader params;
+      params.set("stability/mode", name);
+      NodeOptions options;
+      const Status status = loadNodeOptions(params, &options);
+      EXPECT_TRUE(status.ok) << name << ": " << status.message;
+      EXPECT_EQ(options.world.mode, mode);
+    } else {
+      ++unavailable;
+      const std::string message = expectRefused("stability/mode", name);
+      EXPECT_NE(message.find("not available"), std::string::npos) << message;
+      EXPECT_NE(message.find("'" + name + "'"), std::string::npos) << message;
+    }
+  }
+  EXPECT_TRUE(checkStabilityModeAvailable(StabilityMode::kNone).ok);
+  // Until every mode is implemented, at least one was exercised as refused.
+  EXPECT_GE(unavailable, 1);
+}
+
+TEST(NodeOptions, RefusesWrongTypes) {
+  const std::string message = expectRefused("time_step", std::string("fast"));
+  EXPECT_NE(message.find("fast"), std::string::npos) << message;
+  expectRefused("solver_iterations", 20.0);  // a double is not silently truncated
+  expectRefused("solver_iterations", std::string("20"));
+  expectRefused("publish_clock", 1);
+  expectRefused("publish_clock", std::string("true"));
+  expectRefused("frame_id", 3);
+  expectRefused("stability/mode", true);
+  expectRefused("table/size", 1.2);
+  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(std::string("wide"))}));
+  expectRefused("scene_dirs", std::string("/one/dir"));
+  expectRefused("scene_dirs", list({XmlRpcValue(4)}));
+  expectRefused("scene", 7);
+  expectRefused("types_urdf", false);
+}
+
+TEST(NodeOptions, RefusesTableSizeOfWrongLength) {
+  expectRefused("table/size", list({XmlRpcValue(1.2)}));
+  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(0.8), XmlRpcValue(0.1)}));
+  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(-0.8)}));
+  expectRefused("table/size", list({}));
+}
+
+TEST(NodeOptions, ResolvesDataPathsFromThePackage) {
+  NodeOptions options;
+  ASSERT_TRUE(resolveDataPaths("/pkg", &options).ok);
+  EXPECT_EQ(options.types_urdf, "/pkg/urdf/bricks.urdf");
+  EXPECT_EQ(options.materials_yaml, "/pkg/config/bricks.yaml");
+  ASSERT_EQ(options.scene_dirs.size(), 1u);
+  EXPECT_EQ(options.scene_dirs[0], "/pkg/scenes");
+
+  NodeOptions given;
+  given.types_urdf = "/mine.urdf";
+  given.scene_dirs = {"/s"};
+  ASSERT_TRUE(resolveDataPaths("/pkg", &given).ok);
+  EXPECT_EQ(given.types_urdf, "/mine.urdf");
+  EXPECT_EQ(given.scene_dirs, std::vector<std::string>{"/s"});
+
+  NodeOptions nowhere;
+  const Status status = resolveDataPaths("", &nowhere);
+  EXPECT_FALSE(status.ok);
+  EXPECT_NE(status.message.find("~types_urdf"), std::string::npos) << status.message;
+}
+
+}  // namespace
+}  // namespace ros_adapter
+}  // namespace brick_stack_sim

@@ -1,0 +1,419 @@
+// The node started by sim.launch, driven through its services: requests that
+// should work do, bad ones are refused with a message and change nothing.
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "brick_stack_sim/BrickArray.h"
+#include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/PushBrick.h"
+#include "brick_stack_sim/RemoveBrick.h"
+#include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/StabilityEvent.h"
+#include "brick_stack_sim/StepSimulation.h"
+
+namespace {
+
+using namespace brick_stack_sim;
+
+constexpr double kHalfHeight = 0.0039;  ///< Half a KAPLA thickness [m]: a brick lying on the table.
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
+bool waitFor(const std::function<bool()>& done, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::WallTime::now() < end) {
+    if (done()) return true;
+    ros::WallDuration(0.01).sleep();
+  }
+  return done();
+}
+
+class NodeServices : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
+        << "the node did not come up";
+    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick");
+    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick");
+    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset");
+    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks");
+    push_ = nh_.serviceClient<PushBrick>("/brick_sim/push_brick");
+    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
+    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+    // Every test starts from a running node and an empty table.
+    ASSERT_TRUE(setPaused(false));
+    ResetScene reset;
+    ASSERT_TRUE(reset_.call(reset));
+    ASSERT_TRUE(reset.response.success) << reset.response.message;
+    ASSERT_TRUE(bricks().empty());
+  }
+
+  PlaceBrick::Response place(const std::string& id, double x, double y, double z, double yaw = 0.0,
+                             const std::string& type = "kapla") {
+    PlaceBrick srv;
+    srv.request.id = id;
+    srv.request.type = type;
+    srv.request.pose.position.x = x;
+    srv.request.pose.position.y = y;
+    srv.request.pose.position.z = z;
+    srv.request.pose.orientation.z = std::sin(yaw / 2);
+    srv.request.pose.orientation.w = std::cos(yaw / 2);
+    return call(place_, srv);
+  }
+
+  template <typename Service>
+  typename Service::Response call(ros::ServiceClient& client, Service& srv) {
+    EXPECT_TRUE(client.call(srv)) << "call to " << client.getService() << " failed";
+    return srv.response;
+  }
+
+  std::vector<Brick> bricks() {
+    GetBricks srv;
+    EXPECT_TRUE(get_.call(srv));
+    EXPECT_TRUE(srv.response.success) << srv.response.message;
+    return srv.response.bricks;
+  }
+
+  std::optional<Brick> brick(const std::string& id) {
+    for (const Brick& b : bricks())
+      if (b.id == id) return b;
+    return std::nullopt;
+  }
+
+  bool setPaused(bool paused) {
+    std_srvs::SetBool srv;
+    srv.request.data = paused;
+    return pause_.call(srv) && srv.response.success;
+  }
+
+  StepSimulation::Response step(unsigned steps) {
+    StepSimulation srv;
+    srv.request.steps = steps;
+    return call(step_, srv);
+  }
+
+  /// Expects a refusal that says something, for the request named `what`.
+  template <typename Response>
+  void expectRefused(const Response& response, const std::string& what) {
+    EXPECT_FALSE(response.success) << what << " was accepted";
+    EXPECT_FALSE(response.message.empty()) << what << " refused without a message";
+  }
+
+  ros::NodeHandle nh_;
+  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_;
+};
+
+TEST_F(NodeServices, PlaceGetRemove) {
+  const PlaceBrick::Response placed = place("a", 0.05, -0.03, kHalfHeight);
+  ASSERT_TRUE(placed.success) << placed.message;
+  EXPECT_EQ(placed.id, "a");
+  const std::optional<Brick> a = brick("a");
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->type, "kapla");
+  EXPECT_NEAR(a->pose.position.x, 0.05, 1e-3);
+  EXPECT_NEAR(a->pose.position.y, -0.03, 1e-3);
+  EXPECT_NEAR(a->pose.position.z, kHalfHeight, 1e-3);
+  EXPECT_NEAR(a->size.x, 0.117, 1e-9);
+  EXPECT_GT(a->mass, 0.0);
+
+  // No id: the world names it.
+  const PlaceBrick::Response unnamed = place("", -0.2, 0.2, kHalfHeight);
+  ASSERT_TRUE(unnamed.success) << unnamed.message;
+  EXPECT_FALSE(unnamed.id.empty());
+  EXPECT_TRUE(brick(unnamed.id));
+
+  RemoveBrick remove;
+  remove.request.id = "a";
+  ASSERT_TRUE(call(remove_, remove).success) << remove.response.message;
+  EXPECT_FALSE(brick("a"));
+  EXPECT_EQ(bricks().size(), 1u);
+
+  // Removing it again: refused, nothing else touched.
+  expectRefused(call(remove_, remove), "removing an unknown id");
+  EXPECT_EQ(bricks().size(), 1u);
+}
+
+TEST_F(NodeServices, BadPlacementsAreRefusedAndChangeNothing) {
+  ASSERT_TRUE(place("a", 0.0, 0.0, kHalfHeight).success);
+
+  PlaceBrick srv;
+  auto base = [&] {
+    srv.request = PlaceBrick::Request();
+    srv.request.id = "b";
+    srv.request.type = "kapla";
+    srv.request.pose.position.x = 0.3;
+    srv.request.pose.position.z = kHalfHeight;
+    srv.request.pose.orientation.w = 1.0;
+  };
+  base();
+  srv.request.pose.position.y = kNaN;
+  expectRefused(call(place_, srv), "NaN position");
+  EXPECT_NE(srv.response.message.find("pose.position.y"), std::string::npos)
+      << srv.response.message;
+  base();
+  srv.request.twist.angular.x = std::numeric_limits<double>::infinity();
+  expectRefused(call(place_, srv), "Inf angular velocity");
+  base();
+  srv.request.pose.orientation.w = 2.0;
+  expectRefused(call(place_, srv), "non-unit quaternion");
+  EXPECT_NE(srv.response.message.find("orientation"), std::string::npos) << srv.response.message;
+  base();
+  srv.request.pose.orientation.w = 0.0;
+  expectRefused(call(place_, srv), "zero quaternion");
+  base();
+  srv.request.type = "no_such_type";
+  expectRefused(call(place_, srv), "unknown type");
+  EXPECT_NE(srv.response.message.find("no_such_type"), std::string::npos) << srv.response.message;
+  base();
+  srv.request.id = "a";
+  expectRefused(call(place_, srv), "duplicate id");
+  base();
+  srv.request.pose.position.x = 0.01;  // inside brick a
+  expectRefused(call(place_, srv), "pose inside another brick");
+  base();
+  srv.request.pose.position.z = -0.01;
+  expectRefused(call(place_, srv), "pose under the table");
+  base();
+  srv.request.id = "not valid!";
+  expectRefused(call(place_, srv), "invalid id");
+
+  const std::vector<Brick> after = bricks();
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].id, "a");
+  EXPECT_NEAR(after[0].pose.position.x, 0.0, 1e-3);
+  EXPECT_NEAR(after[0].pose.position.z, kHalfHeight, 1e-3);
+
+  // The same request without its fault is accepted: the refusals were about the fault.
+  base();
+  EXPECT_TRUE(call(place_, srv).success) << srv.response.message;
+}
+
+TEST_F(NodeServices, NearUnitQuaternionIsAccepted) {
+  PlaceBrick srv;
+  srv.request.id = "q";
+  srv.request.pose.position.z = kHalfHeight;
+  srv.request.pose.orientation.z = 0.7071;  // 90 degrees about z, four digits
+  srv.request.pose.orientation.w = 0.7071;
+  ASSERT_TRUE(call(place_, srv).success) << srv.response.message;
+  const std::optional<Brick> q = brick("q");
+  ASSERT_TRUE(q);
+  const auto& o = q->pose.orientation;
+  EXPECT_NEAR(std::sqrt(o.x * o.x + o.y * o.y + o.z * o.z + o.w * o.w), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs(o.z), std::sqrt(0.5), 1e-3);
+}
+
+TEST_F(NodeServices, PlacedBrickIsPublishedOnTopicAndTf) {
+  std::mutex mutex;
+  std::optional<Brick> seen;
+  ros::Subscriber sub =
+      nh_.subscribe<BrickArray>("/brick_sim/bricks", 10, [&](const BrickArray::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        EXPECT_EQ(msg->header.frame_id, "world");
+        for (const Brick& b : msg->bricks)
+          if (b.id == "tf_brick") seen = b;
+      });
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+
+  ASSERT_TRUE(place("tf_brick", 0.1, 0.05, kHalfHeight).success);
+  ASSERT_TRUE(waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return seen.has_value();
+      },
+      10.0))
+      << "tf_brick never appeared on ~bricks";
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_NEAR(seen->pose.position.x, 0.1, 1e-3);
+    EXPECT_NEAR(seen->pose.position.y, 0.05, 1e-3);
+  }
+
+  std::string error;
+  ASSERT_TRUE(buffer.canTransform("world", "tf_brick", ros::Time(0), ros::Duration(10.0), &error))
+      << error;
+  const geometry_msgs::TransformStamped transform =
+      buffer.lookupTransform("world", "tf_brick", ros::Time(0));
+  EXPECT_NEAR(transform.transform.translation.x, 0.1, 1e-3);
+  EXPECT_NEAR(transform.transform.translation.y, 0.05, 1e-3);
+  EXPECT_NEAR(transform.transform.translation.z, kHalfHeight, 1e-3);
+}
+
+TEST_F(NodeServices, EventsArriveForPlacementAndRemoval) {
+  std::mutex mutex;
+  std::vector<StabilityEvent> events;
+  ros::Subscriber sub = nh_.subscribe<StabilityEvent>("/brick_sim/events", 100,
+                                                      [&](const StabilityEvent::ConstPtr& msg) {
+                                                        std::lock_guard<std::mutex> lock(mutex);
+                                                        events.push_back(*msg);
+                                                      });
+  ASSERT_TRUE(waitFor([&] { return sub.getNumPublishers() > 0; }, 10.0));
+  auto has = [&](const std::string& id, uint8_t kind) {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const StabilityEvent& e : events)
+      if (e.brick_id == id && e.kind == kind) return true;
+    return false;
+  };
+
+  ASSERT_TRUE(place("ev", -0.1, 0.1, kHalfHeight).success);
+  EXPECT_TRUE(waitFor([&] { return has("ev", StabilityEvent::SPAWNED); }, 10.0))
+      << "no spawned event for ev";
+  RemoveBrick remove;
+  remove.request.id = "ev";
+  ASSERT_TRUE(call(remove_, remove).success);
+  EXPECT_TRUE(waitFor([&] { return has("ev", StabilityEvent::REMOVED); }, 10.0))
+      << "no removed event for ev";
+  // A refused placement is not an event.
+  EXPECT_FALSE(place("ev2", 0.0, 0.0, -1.0).success);
+  ros::WallDuration(0.3).sleep();
+  EXPECT_FALSE(has("ev2", StabilityEvent::SPAWNED));
+}
+
+TEST_F(NodeServices, PauseAndStep) {
+  const StepSimulation::Response running = step(10);
+  expectRefused(running, "step while running");
+
+  ASSERT_TRUE(setPaused(true));
+  // A brick dropped from 5 cm stays in the air while paused...
+  ASSERT_TRUE(place("drop", 0.0, 0.0, 0.05).success);
+  const StepSimulation::Response first = step(1);
+  ASSERT_TRUE(first.success) << first.message;
+  ros::WallDuration(0.3).sleep();
+  std::optional<Brick> drop = brick("drop");
+  ASSERT_TRUE(drop);
+  EXPECT_GT(drop->pose.position.z, 0.0499);
+
+  // ... and falls while stepped: 250 steps of 1 ms are exactly 0.25 s.
+  const StepSimulation::Response second = step(250);
+  ASSERT_TRUE(second.success) << second.message;
+  EXPECT_NEAR(second.sim_time - first.sim_time, 0.25, 1e-9);
+  drop = brick("drop");
+  ASSERT_TRUE(drop);
+  EXPECT_LT(drop->pose.position.z, 0.04);
+
+  // Bad step counts are refused and do not move the clock.
+  expectRefused(step(0), "0 steps");
+  expectRefused(step(2000000), "2e6 steps");
+  const StepSimulation::Response third = step(1);
+  ASSERT_TRUE(third.success);
+  EXPECT_NEAR(third.sim_time - second.sim_time, 0.001, 1e-9);
+
+  // Enough steps for the brick to land on the table.
+  ASSERT_TRUE(step(1000).success);
+  drop = brick("drop");
+  ASSERT_TRUE(drop);
+  EXPECT_NEAR(drop->pose.position.z, kHalfHeight, 1e-3);
+
+  ASSERT_TRUE(setPaused(false));
+  expectRefused(step(1), "step after resuming");
+}
+
+TEST_F(NodeServices, ResetWithUnknownSceneChangesNothing) {
+  ASSERT_TRUE(place("keep", 0.1, 0.1, kHalfHeight).success);
+  ResetScene reset;
+  reset.request.scene = "no_such_scene_1234";
+  expectRefused(call(reset_, reset), "unknown scene");
+  const std::vector<Brick> after = bricks();
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].id, "keep");
+
+  reset.request.scene = "";
+  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  EXPECT_TRUE(bricks().empty());
+}
+
+TEST_F(NodeServices, ResetPlaysSceneOnTime) {
+  std::string scene_path;
+  ASSERT_TRUE(ros::NodeHandle("~").getParam("scene_path", scene_path));
+  ASSERT_TRUE(place("old", 0.1, 0.1, kHalfHeight).success);
+  ASSERT_TRUE(setPaused(true));
+  ResetScene reset;
+  reset.request.scene = scene_path;
+  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  EXPECT_EQ(reset.response.bricks_scheduled, 2u);
+  // s0 is due at once, s1 half a second of sim time later; "old" is gone.
+  EXPECT_FALSE(brick("old"));
+  EXPECT_TRUE(brick("s0"));
+  EXPECT_FALSE(brick("s1"));
+  ASSERT_TRUE(step(400).success);
+  EXPECT_FALSE(brick("s1")) << "placed before its time";
+  ASSERT_TRUE(step(200).success);
+  EXPECT_TRUE(brick("s1")) << "not placed at its time";
+}
+
+TEST_F(NodeServices, SceneWithItsOwnTableAndTypes) {
+  std::string scene_path;
+  ASSERT_TRUE(ros::NodeHandle("~").getParam("own_table_scene_path", scene_path));
+  ASSERT_TRUE(setPaused(true));
+  const double before = step(1).sim_time;
+  ResetScene reset;
+  reset.request.scene = scene_path;
+  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  const std::optional<Brick> t0 = brick("t0");
+  ASSERT_TRUE(t0) << "the scene's brick was not placed";
+  EXPECT_EQ(t0->type, "tiny");
+  EXPECT_NEAR(t0->size.x, 0.02, 1e-9);
+  // A new world for the scene, but sim time does not jump back.
+  const StepSimulation::Response after = step(1);
+  ASSERT_TRUE(after.success);
+  EXPECT_NEAR(after.sim_time, before + 0.001, 1e-9);
+  ASSERT_TRUE(place("t1", 0.05, 0.05, 0.01, 0.0, "tiny").success);
+
+  // An empty reset goes back to the configured world: the scene's type is gone.
+  reset.request.scene = "";
+  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  EXPECT_TRUE(bricks().empty());
+  expectRefused(place("t2", 0.0, 0.0, 0.01, 0.0, "tiny"), "a type of a previous scene");
+  EXPECT_TRUE(place("k", 0.0, 0.0, kHalfHeight).success);
+  EXPECT_GE(step(1).sim_time, after.sim_time + 0.001 - 1e-9);
+}
+
+TEST_F(NodeServices, PushBrick) {
+  ASSERT_TRUE(setPaused(true));
+  ASSERT_TRUE(place("p", 0.0, 0.0, kHalfHeight).success);
+  ASSERT_TRUE(step(10).success);
+  const double x0 = brick("p")->pose.position.x;
+
+  PushBrick push;
+  push.request.id = "p";
+  push.request.impulse.x = kNaN;
+  expectRefused(call(push_, push), "NaN impulse");
+  push.request.impulse.x = 0.005;  // 0.42 m/s for a 11.9 g plank: slides ~2 cm
+  push.request.point.z = kHalfHeight;
+  push.request.id = "nobody";
+  expectRefused(call(push_, push), "push of an unknown id");
+  ASSERT_TRUE(step(10).success);
+  EXPECT_NEAR(brick("p")->pose.position.x, x0, 1e-4) << "a refused push moved the brick";
+
+  push.request.id = "p";
+  ASSERT_TRUE(call(push_, push).success) << push.response.message;
+  ASSERT_TRUE(step(300).success);
+  EXPECT_GT(brick("p")->pose.position.x - x0, 0.005);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_node_services");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  spinner.stop();
+  ros::shutdown();
+  return result;
+}
