@@ -58,6 +58,7 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
       auto more = player.placeDue(world.get());
       refused.insert(refused.end(), more.begin(), more.end());
     }
+    if (options.observer) options.observer(*world);
   }
   result.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -85,6 +86,13 @@ std::string toJson(const RunReport& r) {
   json.key("cost").beginObject();
   json.key("bullet_steps").value(static_cast<unsigned long long>(r.cost.bullet_steps));
   json.key("awake_brick_steps").value(static_cast<unsigned long long>(r.cost.awake_brick_steps));
+  json.key("stability_updates").value(static_cast<unsigned long long>(r.cost.stability_updates));
+  json.endObject();
+  // Wall time of each stage, like wall_time not reproducible between runs.
+  json.key("stage_seconds").beginObject();
+  json.key("bullet").value(r.cost.bullet_seconds);
+  json.key("contacts").value(r.cost.contact_seconds);
+  json.key("stability").value(r.cost.stability_seconds);
   json.endObject();
   json.key("max_displacement").value(r.maxDisplacement());
   json.key("bricks").beginArray();

@@ -1,11 +1,13 @@
 #include "brick_stack_sim/core/brick_world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <unordered_map>
 
+#include <BulletCollision/BroadphaseCollision/btDbvt.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 
@@ -16,6 +18,12 @@
 namespace brick_stack_sim {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 constexpr const char* kTableId = "table";
 constexpr const char* kWorldId = "world";
@@ -71,6 +79,10 @@ struct BrickRecord {
   unsigned serial = 0;
   bool fell_off = false;
   bool frozen = false;  // taken out of Bullet's dynamics by the stability model
+  // A frozen brick is in Bullet's world only while a moving brick is near it.
+  bool in_bullet = false;
+  btDbvtNode* frozen_leaf = nullptr;
+  std::uint64_t needed_at_step = 0;
   // The last state known to be finite, restored if Bullet ever produces NaN.
   btTransform last_good_transform;
 };
@@ -95,6 +107,14 @@ struct BrickWorld::Impl {
   std::vector<std::unique_ptr<BrickRecord>> bricks;  // placement order
   std::unordered_map<std::string, BrickRecord*> by_id;
   std::unordered_map<BodyHandle, BrickRecord*> by_handle;
+  // The bricks Bullet simulates, in placement order: a settled scene's frozen
+  // bricks cost nothing per step, not even a look.
+  std::vector<BrickRecord*> movers;
+  // Every frozen brick by its box. Bullet loops over all its collision objects
+  // every step (AABBs, islands), so a frozen brick is added to Bullet, as a
+  // static collider, only while some moving brick could reach it.
+  btDbvt frozen_tree;
+  std::vector<BrickRecord*> frozen_in_bullet;
   std::unique_ptr<StabilityModel> model;  // null in mode none
   std::vector<PairContact> contacts;      // of the last Bullet step
   unsigned next_serial = 0;
@@ -123,6 +143,16 @@ struct BrickWorld::Impl {
   void runStabilityModel(bool bullet_stepped);
   void apply(const StabilityDecisions& decisions);
   void freezeBody(BrickRecord* brick);
+  void addMover(BrickRecord* brick);
+  void removeMover(BrickRecord* brick);
+  void addToBullet(BrickRecord* brick);
+  void removeFromBullet(BrickRecord* brick);
+  void forgetFrozen(BrickRecord* brick);
+  /// Frozen bricks whose boxes overlap `low`..`high`, in tree order.
+  std::vector<BrickRecord*> frozenNear(const btVector3& low, const btVector3& high) const;
+  /// Brings the frozen bricks that moving bricks may reach this step into
+  /// Bullet, and sends back those no mover has come near for a while.
+  void updateFrozenColliders();
   void wakeBody(BrickRecord* brick);
   std::string wakeReason(const WakeDecision& decision) const;
   /// Flush supports of a brick resting where it was just placed, from geometry.
@@ -189,13 +219,17 @@ void BrickWorld::Impl::buildWorld() {
 
 void BrickWorld::Impl::destroyWorld() {
   if (world) {
-    for (auto& brick : bricks) world->removeRigidBody(brick->body.get());
+    for (auto& brick : bricks)
+      if (brick->in_bullet) world->removeRigidBody(brick->body.get());
     if (table_body) world->removeRigidBody(table_body.get());
     if (floor_body) world->removeRigidBody(floor_body.get());
   }
   bricks.clear();
   by_id.clear();
   by_handle.clear();
+  movers.clear();
+  frozen_tree.clear();
+  frozen_in_bullet.clear();
   contacts.clear();
   world.reset();
   solver.reset();
@@ -265,8 +299,8 @@ std::vector<std::string> BrickWorld::Impl::wakeTouching(const BrickRecord& brick
   low -= reach;
   high += reach;
   std::vector<std::string> woken;
-  for (auto& other : bricks) {
-    if (other.get() == &brick || other->frozen) continue;  // the model wakes frozen ones
+  for (BrickRecord* other : movers) {  // the model wakes frozen ones
+    if (other == &brick) continue;
     btVector3 other_low, other_high;
     other->body->getAabb(other_low, other_high);
     if (TestAabbAgainstAabb2(low, high, other_low, other_high)) {
@@ -278,7 +312,7 @@ std::vector<std::string> BrickWorld::Impl::wakeTouching(const BrickRecord& brick
 }
 
 void BrickWorld::Impl::checkAfterStep() {
-  for (auto& brick : bricks) {
+  for (BrickRecord* brick : movers) {
     btRigidBody& body = *brick->body;
     if (!body.isActive()) continue;
     const btTransform& transform = body.getWorldTransform();
@@ -401,47 +435,128 @@ void BrickWorld::Impl::readContacts() {
 void BrickWorld::Impl::runStabilityModel(bool bullet_stepped) {
   // Nothing moved and nothing is pending: the model would find what it found.
   if (!bullet_stepped && !model->busy()) return;
-  if (bullet_stepped) readContacts();
-  std::vector<BodyMotion> movers;
-  for (const auto& brick : bricks) {
-    if (brick->frozen) continue;
+  if (bullet_stepped) {
+    const Clock::time_point contacts_start = Clock::now();
+    readContacts();
+    cost.contact_seconds += secondsSince(contacts_start);
+  }
+  const Clock::time_point model_start = Clock::now();
+  std::vector<BodyMotion> motions;
+  motions.reserve(movers.size());
+  for (const BrickRecord* brick : movers) {
     const btRigidBody& body = *brick->body;
-    movers.push_back(BodyMotion{brick->serial, convertBtToEigen(body.getCenterOfMassPosition()),
-                                brick->type.mass, convertBtToEigen(body.getLinearVelocity()),
-                                convertBtToEigen(body.getAngularVelocity()), false});
+    motions.push_back(BodyMotion{brick->serial, convertBtToEigen(body.getCenterOfMassPosition()),
+                                 brick->type.mass, convertBtToEigen(body.getLinearVelocity()),
+                                 convertBtToEigen(body.getAngularVelocity()), false});
   }
   StabilityDecisions decisions;
-  model->update(options.time_step, movers, contacts, &decisions);
+  model->update(options.time_step, motions, contacts, &decisions);
   ++cost.stability_updates;
   apply(decisions);
+  cost.stability_seconds += secondsSince(model_start);
+}
+
+void BrickWorld::Impl::addToBullet(BrickRecord* brick) {
+  if (brick->in_bullet) return;
+  world->addRigidBody(brick->body.get());
+  brick->in_bullet = true;
+  if (brick->frozen) frozen_in_bullet.push_back(brick);
+}
+
+void BrickWorld::Impl::removeFromBullet(BrickRecord* brick) {
+  if (!brick->in_bullet) return;
+  world->removeRigidBody(brick->body.get());
+  brick->in_bullet = false;
+  auto position = std::find(frozen_in_bullet.begin(), frozen_in_bullet.end(), brick);
+  if (position != frozen_in_bullet.end()) frozen_in_bullet.erase(position);
+}
+
+void BrickWorld::Impl::forgetFrozen(BrickRecord* brick) {
+  if (brick->frozen_leaf) frozen_tree.remove(brick->frozen_leaf);
+  brick->frozen_leaf = nullptr;
 }
 
 void BrickWorld::Impl::freezeBody(BrickRecord* brick) {
   btRigidBody* body = brick->body.get();
   // Bullet keeps static and dynamic bodies in different broadphase groups,
-  // chosen when a body is added: out, change, back in.
-  world->removeRigidBody(body);
+  // chosen when a body is added: out, change, and back in only when needed.
+  removeFromBullet(brick);
   body->setLinearVelocity(btVector3(0, 0, 0));
   body->setAngularVelocity(btVector3(0, 0, 0));
   body->setMassProps(0.0, btVector3(0, 0, 0));  // also sets CF_STATIC_OBJECT
   body->updateInertiaTensor();
   body->clearForces();
-  world->addRigidBody(body);
   brick->frozen = true;
+  removeMover(brick);
+  btVector3 low, high;
+  body->getCollisionShape()->getAabb(body->getWorldTransform(), low, high);
+  brick->frozen_leaf = frozen_tree.insert(btDbvtVolume::FromMM(low, high), brick);
+}
+
+std::vector<BrickRecord*> BrickWorld::Impl::frozenNear(const btVector3& low,
+                                                       const btVector3& high) const {
+  struct Collector : btDbvt::ICollide {
+    std::vector<BrickRecord*> found;
+    void Process(const btDbvtNode* leaf) override {
+      found.push_back(static_cast<BrickRecord*>(leaf->data));
+    }
+  } collector;
+  frozen_tree.collideTV(frozen_tree.m_root, btDbvtVolume::FromMM(low, high), collector);
+  return collector.found;
+}
+
+void BrickWorld::Impl::updateFrozenColliders() {
+  // Far enough that a mover cannot cross it in one step, plus a millimetre so
+  // that resting contacts stay in Bullet's manifolds.
+  constexpr double kReach = 1e-3;
+  for (const BrickRecord* mover : movers) {
+    const btRigidBody& body = *mover->body;
+    btVector3 low, high;
+    body.getAabb(low, high);
+    const double travel =
+        body.getLinearVelocity().length() * options.time_step +
+        body.getAngularVelocity().length() * options.time_step * mover->type.halfExtents().norm();
+    const btVector3 reach(travel + kReach, travel + kReach, travel + kReach);
+    for (BrickRecord* frozen : frozenNear(low - reach, high + reach)) {
+      frozen->needed_at_step = cost.steps;
+      addToBullet(frozen);
+    }
+  }
+  // Sent back only after a while, so a brick rocking at a frozen brick's edge
+  // does not cost a removal and an insertion every step.
+  constexpr std::uint64_t kKeepSteps = 50;
+  for (std::size_t i = frozen_in_bullet.size(); i-- > 0;) {
+    BrickRecord* frozen = frozen_in_bullet[i];
+    if (frozen->needed_at_step + kKeepSteps < cost.steps) removeFromBullet(frozen);
+  }
+}
+
+void BrickWorld::Impl::addMover(BrickRecord* brick) {
+  auto position = std::lower_bound(
+      movers.begin(), movers.end(), brick,
+      [](const BrickRecord* a, const BrickRecord* b) { return a->serial < b->serial; });
+  movers.insert(position, brick);
+}
+
+void BrickWorld::Impl::removeMover(BrickRecord* brick) {
+  auto position = std::find(movers.begin(), movers.end(), brick);
+  if (position != movers.end()) movers.erase(position);
 }
 
 void BrickWorld::Impl::wakeBody(BrickRecord* brick) {
   btRigidBody* body = brick->body.get();
-  world->removeRigidBody(body);
+  removeFromBullet(brick);
+  forgetFrozen(brick);
+  brick->frozen = false;
   body->setMassProps(brick->type.mass, convertEigenToBt(brick->type.inertia));
   body->updateInertiaTensor();
   body->setLinearVelocity(btVector3(0, 0, 0));
   body->setAngularVelocity(btVector3(0, 0, 0));
-  world->addRigidBody(body);
+  addToBullet(brick);
   body->forceActivationState(options.sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
   body->setDeactivationTime(0.0);
   brick->last_good_transform = body->getWorldTransform();
-  brick->frozen = false;
+  addMover(brick);
 }
 
 std::vector<PairContact> BrickWorld::Impl::placementSupports(const BrickRecord& brick) const {
@@ -458,8 +573,15 @@ std::vector<PairContact> BrickWorld::Impl::placementSupports(const BrickRecord& 
       supports.push_back(std::move(contact));
   };
   try_support(kTableHandle);
-  for (const auto& other : bricks)
-    if (other->frozen) try_support(other->serial);
+  btVector3 low, high;
+  brick.body->getCollisionShape()->getAabb(brick.body->getWorldTransform(), low, high);
+  const btVector3 reach(options.stability.contact_distance, options.stability.contact_distance,
+                        options.stability.contact_distance);
+  std::vector<BrickRecord*> near = frozenNear(low - reach, high + reach);
+  // Tree order depends on insertion history; placement order keeps supports deterministic.
+  std::sort(near.begin(), near.end(),
+            [](const BrickRecord* a, const BrickRecord* b) { return a->serial < b->serial; });
+  for (const BrickRecord* other : near) try_support(other->serial);
   return supports;
 }
 
@@ -552,12 +674,23 @@ Status BrickWorld::checkPlacement(const BrickPlacement& p) const {
                          std::to_string(w.options.max_angular_speed));
 
   const OrientedBox box{p.pose, type->halfExtents()};
-  double lowest = 0.0;
-  for (const Eigen::Vector3d& corner : corners(box)) lowest = std::min(lowest, corner.z());
-  if (lowest < -w.options.overlap_tolerance)
-    return Status::error("pose puts the brick " + millimetres(-lowest) +
+  Eigen::Vector3d low = box.pose.translation(), high = low;
+  for (const Eigen::Vector3d& corner : corners(box)) {
+    low = low.cwiseMin(corner);
+    high = high.cwiseMax(corner);
+  }
+  if (low.z() < -w.options.overlap_tolerance)
+    return Status::error("pose puts the brick " + millimetres(-low.z()) +
                          " below the table top (z = 0)");
-  for (const auto& other : w.bricks) {
+  // Candidates: every moving brick, and the frozen ones whose boxes come near.
+  std::vector<const BrickRecord*> candidates(w.movers.begin(), w.movers.end());
+  for (const BrickRecord* frozen :
+       w.frozenNear(convertEigenToBt(low) - btVector3(1e-3, 1e-3, 1e-3),
+                    convertEigenToBt(high) + btVector3(1e-3, 1e-3, 1e-3)))
+    candidates.push_back(frozen);
+  std::sort(candidates.begin(), candidates.end(),
+            [](const BrickRecord* a, const BrickRecord* b) { return a->serial < b->serial; });
+  for (const BrickRecord* other : candidates) {
     const OrientedBox other_box{convertBtToEigen(other->body->getWorldTransform()),
                                 other->type.halfExtents()};
     const double gap = separation(box, other_box);
@@ -579,7 +712,7 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
   brick->serial = w.next_serial++;
   brick->last_good_transform = brick->body->getWorldTransform();
   brick->body->setUserIndex(static_cast<int>(brick->serial));
-  w.world->addRigidBody(brick->body.get());
+  w.addToBullet(brick.get());
   w.by_id[brick->id] = brick.get();
   w.by_handle[brick->serial] = brick.get();
   w.emit(SimEventKind::kSpawned, brick->id,
@@ -587,6 +720,7 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
   if (assigned_id) *assigned_id = brick->id;
   BrickRecord* record = brick.get();
   w.bricks.push_back(std::move(brick));
+  w.movers.push_back(record);  // the newest serial: the end keeps the order
   if (w.model && placement.linear_velocity.isZero() && placement.angular_velocity.isZero()) {
     StabilityDecisions decisions;
     w.model->placedAtRest(
@@ -612,7 +746,9 @@ Status BrickWorld::removeBrick(const std::string& id) {
   }
   for (std::string& id : w.wakeTouching(*brick))
     if (std::find(woken.begin(), woken.end(), id) == woken.end()) woken.push_back(std::move(id));
-  w.world->removeRigidBody(brick->body.get());
+  w.removeFromBullet(brick);
+  w.forgetFrozen(brick);
+  w.removeMover(brick);
   w.by_id.erase(found);
   w.by_handle.erase(brick->serial);
   w.bricks.erase(std::find_if(w.bricks.begin(), w.bricks.end(),
@@ -660,17 +796,20 @@ void BrickWorld::clear() {
 void BrickWorld::step() {
   Impl& w = *impl_;
   std::uint64_t awake = 0;
-  for (const auto& brick : w.bricks) awake += !brick->frozen && brick->body->isActive() ? 1 : 0;
+  for (const BrickRecord* brick : w.movers) awake += brick->body->isActive() ? 1 : 0;
   ++w.cost.steps;
   // Plain Bullet (mode none) is the baseline and always steps; with a stability
   // model, a world where nothing is awake has nothing for Bullet to do.
   const bool step_bullet = !w.model || awake > 0;
   if (step_bullet) {
+    const Clock::time_point bullet_start = Clock::now();
+    if (w.model) w.updateFrozenColliders();
     // maxSubSteps = 0: exactly one step of exactly time_step, no interpolation.
     w.world->stepSimulation(w.options.time_step, 0, w.options.time_step);
     ++w.cost.bullet_steps;
     w.cost.awake_brick_steps += awake;
     w.checkAfterStep();
+    w.cost.bullet_seconds += secondsSince(bullet_start);
   }
   if (w.model) w.runStabilityModel(step_bullet);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -159,8 +160,17 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
   const std::string name = readString(node, "name", where);
   if (name == "tower") {
     requireKnownKeys(node, where,
-                     {"name", "layers", "bricks_per_layer", "type", "start", "interval", "gap"});
+                     {"name", "layers", "bricks_per_layer", "type", "start", "interval", "gap",
+                      "origin", "grid", "spacing"});
     TowerParams params;
+    params.origin = readVector<2>(node, "origin", where, params.origin);
+    const Eigen::Vector2d grid =
+        readVector<2>(node, "grid", where, Eigen::Vector2d(params.grid_x, params.grid_y));
+    params.grid_x = static_cast<int>(grid.x());
+    params.grid_y = static_cast<int>(grid.y());
+    if (params.grid_x != grid.x() || params.grid_y != grid.y())
+      fail(where + ".grid", "expected two integers");
+    params.spacing = readNumber(node, "spacing", where, params.spacing);
     params.layers = readInt(node, "layers", where, params.layers);
     params.bricks_per_layer = readInt(node, "bricks_per_layer", where, params.bricks_per_layer);
     params.type = readString(node, "type", where);
@@ -195,7 +205,41 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
       fail(where, generated.message);
     return;
   }
-  fail(where, "unknown generator '" + name + "' (available: tower, harmonic, slant_tower)");
+  if (name == "pyramid") {
+    requireKnownKeys(node, where, {"name", "base", "gap", "type", "start", "interval"});
+    PyramidParams params;
+    params.base = readInt(node, "base", where, params.base);
+    params.gap = readNumber(node, "gap", where, params.gap);
+    params.type = readString(node, "type", where);
+    params.start = readNumber(node, "start", where, params.start);
+    params.interval = readNumber(node, "interval", where, params.interval);
+    if (Status generated = generatePyramid(params, types, bricks); !generated)
+      fail(where, generated.message);
+    return;
+  }
+  if (name == "pile") {
+    requireKnownKeys(node, where,
+                     {"name", "bricks", "columns", "rows", "cell", "layer_height", "base_height",
+                      "max_tilt", "seed", "type", "start", "origin"});
+    PileParams params;
+    params.origin = readVector<2>(node, "origin", where, params.origin);
+    params.bricks = readInt(node, "bricks", where, params.bricks);
+    params.columns = readInt(node, "columns", where, params.columns);
+    params.rows = readInt(node, "rows", where, params.rows);
+    params.cell = readNumber(node, "cell", where, params.cell);
+    params.layer_height = readNumber(node, "layer_height", where, params.layer_height);
+    params.base_height = readNumber(node, "base_height", where, params.base_height);
+    params.max_tilt = readNumber(node, "max_tilt", where, params.max_tilt);
+    params.seed =
+        static_cast<unsigned>(readInt(node, "seed", where, static_cast<int>(params.seed)));
+    params.type = readString(node, "type", where);
+    params.start = readNumber(node, "start", where, params.start);
+    if (Status generated = generatePile(params, types, bricks); !generated)
+      fail(where, generated.message);
+    return;
+  }
+  fail(where,
+       "unknown generator '" + name + "' (available: tower, harmonic, slant_tower, pyramid, pile)");
 }
 
 bool isFile(const std::string& path) {
@@ -247,22 +291,33 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   std::vector<double> lanes = {-offset, offset};
   if (params.bricks_per_layer == 3) lanes.insert(lanes.begin() + 1, 0.0);
 
+  if (params.grid_x < 1 || params.grid_y < 1 || params.grid_x * params.grid_y > 10000)
+    return Status::error("tower grid must have 1 to 10000 copies");
+  if (!params.origin.allFinite() || !std::isfinite(params.spacing) || params.spacing < 0.0)
+    return Status::error("tower origin and spacing must be finite, spacing >= 0 m");
+
   int index = static_cast<int>(bricks->size());
   int placed = 0;
-  for (int layer = 0; layer < params.layers; ++layer) {
-    const bool along_y = layer % 2 == 1;
-    const double z = 0.5 * height + layer * (height + params.gap);
-    for (double lane : lanes) {
-      ScheduledBrick brick;
-      brick.placement.id = "b" + std::to_string(index++);
-      brick.placement.type = type_name;
-      brick.placement.pose.translation() =
-          along_y ? Eigen::Vector3d(lane, 0.0, z) : Eigen::Vector3d(0.0, lane, z);
-      if (along_y)
-        brick.placement.pose.linear() =
-            Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-      brick.at = params.start + params.interval * placed++;
-      bricks->push_back(brick);
+  for (int gx = 0; gx < params.grid_x; ++gx) {
+    for (int gy = 0; gy < params.grid_y; ++gy) {
+      const Eigen::Vector2d centre = params.origin + params.spacing * Eigen::Vector2d(gx, gy);
+      for (int layer = 0; layer < params.layers; ++layer) {
+        const bool along_y = layer % 2 == 1;
+        const double z = 0.5 * height + layer * (height + params.gap);
+        for (double lane : lanes) {
+          ScheduledBrick brick;
+          brick.placement.id = "b" + std::to_string(index++);
+          brick.placement.type = type_name;
+          brick.placement.pose.translation() =
+              along_y ? Eigen::Vector3d(centre.x() + lane, centre.y(), z)
+                      : Eigen::Vector3d(centre.x(), centre.y() + lane, z);
+          if (along_y)
+            brick.placement.pose.linear() =
+                Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+          brick.at = params.start + params.interval * placed++;
+          bricks->push_back(brick);
+        }
+      }
     }
   }
   return Status::success();
@@ -323,6 +378,84 @@ Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary
   return Status::success();
 }
 
+Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
+                       std::vector<ScheduledBrick>* bricks) {
+  if (params.base < 1 || params.base > 200)
+    return Status::error("pyramid base = " + std::to_string(params.base) + ": must be in [1, 200]");
+  if (!std::isfinite(params.gap) || params.gap < 0.0 || params.gap > 0.1)
+    return Status::error("pyramid gap must be in [0, 0.1] m");
+  if (Status timing = checkTiming("pyramid", params.start, params.interval); !timing) return timing;
+  const BrickType* type = generatorType(params.type, types);
+  if (!type) return Status::error("pyramid type '" + params.type + "' is not a known brick type");
+  const double pitch = type->size.x() + params.gap;
+  int index = static_cast<int>(bricks->size());
+  int placed = 0;
+  for (int row = 0; row < params.base; ++row) {
+    const int count = params.base - row;
+    for (int i = 0; i < count; ++i) {
+      ScheduledBrick brick;
+      brick.placement.id = "b" + std::to_string(index++);
+      brick.placement.type = type->name;
+      brick.placement.pose.translation() =
+          Eigen::Vector3d((i - 0.5 * (count - 1)) * pitch, 0.0, (row + 0.5) * type->size.z());
+      brick.at = params.start + params.interval * placed++;
+      bricks->push_back(brick);
+    }
+  }
+  return Status::success();
+}
+
+Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
+                    std::vector<ScheduledBrick>* bricks) {
+  if (params.bricks < 1 || params.bricks > 100000)
+    return Status::error("pile bricks = " + std::to_string(params.bricks) +
+                         ": must be in [1, 100000]");
+  if (params.columns < 1 || params.rows < 1)
+    return Status::error("pile columns and rows must be >= 1");
+  if (!params.origin.allFinite()) return Status::error("pile origin must be finite");
+  if (!std::isfinite(params.cell) || !std::isfinite(params.layer_height) ||
+      !std::isfinite(params.base_height) || !std::isfinite(params.max_tilt) || params.cell <= 0.0 ||
+      params.layer_height <= 0.0 || params.base_height <= 0.0 || params.max_tilt < 0.0 ||
+      params.max_tilt > 1.5)
+    return Status::error(
+        "pile cell, layer_height and base_height must be > 0 m, max_tilt in "
+        "[0, 1.5] rad");
+  if (Status timing = checkTiming("pile", params.start, 0.0); !timing) return timing;
+  const BrickType* type = generatorType(params.type, types);
+  if (!type) return Status::error("pile type '" + params.type + "' is not a known brick type");
+  // Raw mt19937 output scaled by hand: std's distributions differ between
+  // standard libraries, and a scene must be the same scene everywhere.
+  std::mt19937 random(params.seed);
+  auto uniform = [&random](double low, double high) {
+    return low + (high - low) * (static_cast<double>(random()) / 4294967296.0);
+  };
+  const int per_layer = params.columns * params.rows;
+  // Offsets stay within what keeps two neighbours apart whatever their yaw.
+  const double footprint_radius = 0.5 * std::hypot(type->size.x(), type->size.y());
+  const double slack = 0.5 * params.cell - footprint_radius;
+  int index = static_cast<int>(bricks->size());
+  for (int i = 0; i < params.bricks; ++i) {
+    const int layer = i / per_layer, column = i % params.columns,
+              row = (i % per_layer) / params.columns;
+    ScheduledBrick brick;
+    brick.placement.id = "b" + std::to_string(index++);
+    brick.placement.type = type->name;
+    const double jitter = std::max(slack, 0.0);
+    brick.placement.pose.translation() =
+        Eigen::Vector3d(params.origin.x() + (column - 0.5 * (params.columns - 1)) * params.cell +
+                            uniform(-jitter, jitter),
+                        params.origin.y() + (row - 0.5 * (params.rows - 1)) * params.cell +
+                            uniform(-jitter, jitter),
+                        params.base_height + layer * params.layer_height);
+    const double yaw = uniform(-M_PI, M_PI), pitch = uniform(-params.max_tilt, params.max_tilt),
+                 roll = uniform(-params.max_tilt, params.max_tilt);
+    brick.placement.pose.linear() = rotationFromRpy(Eigen::Vector3d(roll, pitch, yaw));
+    brick.at = params.start;
+    bricks->push_back(brick);
+  }
+  return Status::success();
+}
+
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types) {
   for (const BrickType& type : scene.types) {
     if (Status added = types->add(type); !added) return added;
@@ -346,9 +479,15 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     }
     BrickTypeLibrary all_types = types;
     if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);
-    if (root["generator"])
-      runGenerator(root["generator"], result.table.value_or(TableOptions()), all_types,
-                   &result.bricks);
+    if (const YAML::Node generators = root["generator"]) {
+      const TableOptions table = result.table.value_or(TableOptions());
+      if (generators.IsSequence()) {
+        for (const YAML::Node& generator : generators)
+          runGenerator(generator, table, all_types, &result.bricks);
+      } else {
+        runGenerator(generators, table, all_types, &result.bricks);
+      }
+    }
     if (root["bricks"]) {
       if (!root["bricks"].IsSequence()) fail("bricks", "expected a list");
       std::size_t index = 0;

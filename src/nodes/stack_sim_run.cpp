@@ -22,7 +22,9 @@ int main(int argc, char** argv) {
   BrickTypeLibrary types;
   Scene scene;
   RunReport report;
-  RunOptions options{cli.world, cli.duration};
+  RunOptions options;
+  options.world = cli.world;
+  options.duration = cli.duration;
   Status status = BrickTypeLibrary::load(cli.types_urdf, cli.materials_yaml, &types);
   if (status) status = loadScene(cli.scene, cli.scene_dirs, types, &scene);
   if (status) status = runScene(scene, types, options, &report);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@ namespace brick_stack_sim {
 struct RunOptions {
   WorldOptions world;              ///< Table is replaced by the scene's when it has one.
   std::optional<double> duration;  ///< Sim time [s]; default: last placement + 5 s.
+  /// Called after every step and its placements (benchmarks sample with it).
+  std::function<void(const BrickWorld&)> observer;
 };
 
 /// A brick's end state compared with where it was placed.

@@ -22,6 +22,10 @@ struct CostCounters {
   std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
   std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
+  // Wall time per stage [s], for the benchmark's cost shares.
+  double bullet_seconds = 0.0;     ///< Bullet's stepSimulation and the finiteness check.
+  double contact_seconds = 0.0;    ///< Reading contacts from Bullet's manifolds.
+  double stability_seconds = 0.0;  ///< The stability model and freeze / wake.
 };
 
 /// Bricks on a table, simulated by Bullet in double precision with a fixed

@@ -19,6 +19,7 @@ struct ScheduledBrick {
 
 /// A scene (DESIGN.md section 4): an optional table override, optional extra
 /// brick types, and bricks with placement times, sorted by `at` (stable).
+/// `generator` may be one generator or a list of them.
 struct Scene {
   std::string name;
   std::optional<TableOptions> table;
@@ -34,6 +35,9 @@ struct TowerParams {
   double start = 0.0;        ///< Time of the first placement [s].
   double interval = 0.0;     ///< Time between placements [s]; 0: all at `start`.
   double gap = 0.0;          ///< Vertical clearance between layers at placement [m].
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the (first) tower [m].
+  int grid_x = 1, grid_y = 1;                        ///< Copies of the tower along x and y.
+  double spacing = 0.13;                             ///< Distance between copies [m].
 };
 
 /// Parameters of the `harmonic` generator (DESIGN.md section 5): n bricks
@@ -58,6 +62,32 @@ struct SlantTowerParams {
   double interval = 0.0;  ///< [s]
 };
 
+/// Parameters of the `pyramid` generator: rows of bricks along x laid end to
+/// end, each row one brick shorter and resting across the joints below.
+struct PyramidParams {
+  int base = 20;       ///< Bricks in the lowest row; base (base + 1) / 2 in all.
+  double gap = 0.002;  ///< Gap between neighbours in a row [m].
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s]
+};
+
+/// Parameters of the `pile` generator: bricks dropped from a lattice above the
+/// table with pseudo-random yaw, tilt and offsets (fixed seed: reproducible).
+struct PileParams {
+  int bricks = 1000;
+  int columns = 7;             ///< Lattice cells along x.
+  int rows = 5;                ///< Lattice cells along y.
+  double cell = 0.13;          ///< Lattice pitch [m]; a KAPLA turned any way spans 0.119 m.
+  double layer_height = 0.04;  ///< Vertical pitch [m]; a KAPLA tilted 0.2 rad spans 0.036 m.
+  double base_height = 0.03;   ///< Height of the lowest layer's centres [m].
+  double max_tilt = 0.2;       ///< Largest roll and pitch [rad].
+  unsigned seed = 1;
+  std::string type;
+  double start = 0.0;                                ///< [s]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the lattice [m].
+};
+
 /// Parses a scene from YAML text. `types` resolves the generators' brick sizes
 /// (together with the scene's own types); `name` is used when the yaml has none.
 Status parseScene(const std::string& yaml_text, const std::string& name,
@@ -78,6 +108,14 @@ Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
 /// Appends a slant tower starting at the table centre.
 Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
                           std::vector<ScheduledBrick>* bricks);
+
+/// Appends a pyramid (running bond) centred on the table.
+Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
+                       std::vector<ScheduledBrick>* bricks);
+
+/// Appends a pile drop.
+Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
+                    std::vector<ScheduledBrick>* bricks);
 
 /// Adds the scene's own types to `types` (the scene's win on a name clash).
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
