@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the package needs, only those that are missing,
-# so a second run costs a dpkg query. Usage: install_deps.sh [build|demo|gui]
+# so a second run costs a dpkg query. Usage: install_deps.sh [build|demo|gui|bench]
 set -euo pipefail
 
 build_packages=(
@@ -14,12 +14,14 @@ build_packages=(
   googletest libgtest-dev
 )
 gui_packages=(rviz xvfb imagemagick)
+bench_packages=(python3-matplotlib)
 
 wanted=("${build_packages[@]}")
 case "${1:-build}" in
   build|demo) ;;
   gui) wanted+=("${gui_packages[@]}") ;;
-  *) echo "install_deps.sh: unknown set '$1' (build, demo or gui)" >&2; exit 2 ;;
+  bench) wanted+=("${bench_packages[@]}") ;;
+  *) echo "install_deps.sh: unknown set '$1' (build, demo, gui or bench)" >&2; exit 2 ;;
 esac
 
 missing=()

@@ -65,6 +65,7 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   result.sim_time = world->time();
   result.cost = world->cost();
   result.refused = std::move(refused);
+  result.scheduled = scene.bricks.size() - player.pending();
   for (const BrickSnapshot& brick : world->snapshot()) result.bricks.push_back(outcomeOf(brick));
   result.events = world->takeEvents();
   *report = std::move(result);
@@ -83,6 +84,9 @@ std::string toJson(const RunReport& r) {
   json.key("wall_time").value(r.wall_time);
   json.key("steps").value(static_cast<unsigned long long>(r.cost.steps));
   json.key("nonfinite").value(static_cast<unsigned long long>(r.cost.nonfinite));
+  json.key("blowups").value(static_cast<unsigned long long>(r.cost.blowups));
+  json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
+  json.key("lost").value(static_cast<unsigned long long>(r.lost()));
   json.key("cost").beginObject();
   json.key("bullet_steps").value(static_cast<unsigned long long>(r.cost.bullet_steps));
   json.key("awake_brick_steps").value(static_cast<unsigned long long>(r.cost.awake_brick_steps));

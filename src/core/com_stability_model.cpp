@@ -33,7 +33,9 @@ void evaluateSupport(const Eigen::Vector3d& load_point, BrickStability* s) {
   s->combined_hull = convexHull(all_points);
   s->support_height = point_count ? height_sum / point_count : 0.0;
   s->com_above = load_point;
-  s->margin = signedDistance(s->combined_hull, horizontal(load_point));
+  // Resting on nothing has no hull to measure against: margin 0, next to an
+  // empty list of supporters, rather than an infinity nobody can publish.
+  s->margin = s->supports.empty() ? 0.0 : signedDistance(s->combined_hull, horizontal(load_point));
 }
 
 ComStabilityModel::ComStabilityModel(const StabilityOptions& options) : options_(options) {}

@@ -39,6 +39,10 @@ struct RunReport {
   std::vector<BrickOutcome> bricks;
   std::vector<SimEvent> events;
   std::vector<RefusedPlacement> refused;
+  std::size_t scheduled = 0;  ///< Bricks the scene places within the duration.
+
+  /// Placed bricks missing at the end; anything but 0 is a defect.
+  std::size_t lost() const { return scheduled - refused.size() - bricks.size(); }
 
   double maxDisplacement() const;  ///< [m]; 0 with no bricks.
 };

@@ -43,7 +43,8 @@ struct BrickSnapshot {
   double mass_above = 0.0;                              ///< [kg], including itself.
   std::vector<std::string> supported_by;                ///< Brick ids, or "table".
   double margin = 0.0;  ///< Signed distance [m] of the COM-above projection to the support
-                        ///< hull edge (< 0: outside). 0 until a stability model fills it.
+                        ///< hull edge (< 0: outside). 0 when nothing supports the brick, or
+                        ///< no stability model measures it.
   Eigen::Isometry3d placed_pose = Eigen::Isometry3d::Identity();
   double placed_at = 0.0;  ///< Sim time of placement [s].
   unsigned serial = 0;     ///< Order of placement since the last reset, from 0; never reused.

@@ -21,6 +21,7 @@ struct CostCounters {
   std::uint64_t bullet_steps = 0;       ///< Steps that advanced Bullet.
   std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
+  std::uint64_t blowups = 0;            ///< Runaway speeds (diverged solver) caught and repaired.
   std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
   // Wall time per stage [s], for the benchmark's cost shares.
   double bullet_seconds = 0.0;     ///< Bullet's stepSimulation and the finiteness check.

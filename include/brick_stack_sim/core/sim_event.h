@@ -13,7 +13,7 @@ enum class SimEventKind : unsigned char {
   kImpact = 3,
   kFellOff = 4,
   kRemoved = 5,
-  kNonFinite = 6,  ///< Bullet produced NaN or Inf for this brick; it was restored.
+  kNonFinite = 6,  ///< Bullet produced NaN, Inf or a runaway speed for this brick; it was restored.
 };
 
 /// Lower-case name used in reports: spawned, frozen, woken, impact, fell_off, removed, nonfinite.

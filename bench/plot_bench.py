@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""Plots a stack_sim_bench CSV and writes the table of the benchmark targets.
+
+usage: plot_bench.py RESULTS.csv OUTPUT_DIR
+
+For each case: run time against error for every mode and setting (the Pareto
+picture); for the settled towers: cost against number of bricks. The targets
+of issue 4 are checked on ratios measured side by side in the same CSV.
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+DEFAULT = (0.001, 20)
+COLOURS = {"none_nosleep": "tab:red", "none_sleep": "tab:orange", "com": "tab:green"}
+ERROR_OF = {  # case kind -> (column, axis label)
+    "drift_mm": "drift over the run [mm]",
+    "threshold_error_pct": "harmonic threshold error [% of f]",
+    "collapse_layer_error": "|collapse layer error| [layers]",
+    "penetration_mm": "deepest penetration [mm]",
+}
+
+
+def load(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for key in ("time_step", "wall_ms_per_sim_s", "bricks", "iterations"):
+            r[key] = float(r[key])
+    return rows
+
+
+def error_column(rows):
+    for column in ("drift_mm", "threshold_error_pct", "collapse_layer_error"):
+        if all(r[column] != "" for r in rows):
+            return column
+    return "penetration_mm"
+
+
+def error_value(row, column):
+    value = float(row[column])
+    return abs(value)
+
+
+def is_default(row):
+    return abs(row["time_step"] - DEFAULT[0]) < 1e-9 and int(row["iterations"]) == DEFAULT[1]
+
+
+def plot_pareto(case, rows, out_dir):
+    column = error_column(rows)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for mode, colour in COLOURS.items():
+        points = [r for r in rows if r["mode"] == mode]
+        if not points:
+            continue
+        ax.scatter([error_value(r, column) for r in points],
+                   [max(r["wall_ms_per_sim_s"], 1e-3) for r in points],
+                   color=colour, label=mode, s=36)
+        for r in points:
+            ax.annotate(f"1/{round(1 / r['time_step'])}s,{int(r['iterations'])}it",
+                        (error_value(r, column), max(r["wall_ms_per_sim_s"], 1e-3)),
+                        fontsize=6, xytext=(3, 2), textcoords="offset points")
+    ax.set_yscale("log")
+    ax.set_xscale("symlog", linthresh=0.01)
+    ax.set_xlim(left=0.0)
+    ax.set_xlabel(ERROR_OF[column])
+    ax.set_ylabel("wall time per simulated second [ms]")
+    ax.set_title(f"{case}: run time against error (lower left is better)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, f"pareto_{case}.png"), dpi=110)
+    plt.close(fig)
+
+
+def plot_scaling(rows, out_dir):
+    towers = [r for r in rows if r["case"].startswith("tower") and is_default(r)]
+    if not towers:
+        return
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for mode, colour in COLOURS.items():
+        points = sorted((r["bricks"], max(r["wall_ms_per_sim_s"], 1e-3))
+                        for r in towers if r["mode"] == mode)
+        if points:
+            ax.plot(*zip(*points), "o-", color=colour, label=mode)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("bricks in a settled tower")
+    ax.set_ylabel("wall time per simulated second [ms]")
+    ax.set_title("cost against size of a settled scene (dt 1 ms, 20 iterations)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "scaling_settled.png"), dpi=110)
+    plt.close(fig)
+
+
+def ratio(a, b):
+    return a / b if b > 0 else math.inf
+
+
+def targets(rows):
+    lines = ["| target | measured (same run) | met |", "|---|---|---|"]
+    by = {(r["case"], r["mode"]): r for r in rows if is_default(r)}
+    settled = sorted({r["case"] for r in rows if r["drift_mm"] != "" and is_default(r)})
+    for case in settled:
+        com = by.get((case, "com"))
+        nosleep = by.get((case, "none_nosleep"))
+        sleep = by.get((case, "none_sleep"))
+        if not (com and nosleep and sleep):
+            continue
+        r1 = ratio(nosleep["wall_ms_per_sim_s"], com["wall_ms_per_sim_s"])
+        r2 = ratio(sleep["wall_ms_per_sim_s"], com["wall_ms_per_sim_s"])
+        drift_ok = float(com["drift_mm"]) < min(float(nosleep["drift_mm"]), float(sleep["drift_mm"]))
+        lines.append(f"| {case}: com >= 20x faster than none without sleeping | {r1:.0f}x | "
+                     f"{'yes' if r1 >= 20 else 'no'} |")
+        lines.append(f"| {case}: com >= 5x faster than none with sleeping | {r2:.0f}x | "
+                     f"{'yes' if r2 >= 5 else 'no'} |")
+        lines.append(f"| {case}: at lower drift | com {float(com['drift_mm']):.4f} mm, none "
+                     f"{float(nosleep['drift_mm']):.3f} / {float(sleep['drift_mm']):.3f} mm | "
+                     f"{'yes' if drift_ok else 'no'} |")
+    big, small = by.get(("settled2000_moving10", "com")), by.get(("moving10", "com"))
+    if big and small:
+        r = ratio(big["wall_ms_per_sim_s"], small["wall_ms_per_sim_s"])
+        lines.append(f"| 2000 settled + 10 moving <= 1.5x the 10 alone (com) | {r:.2f}x | "
+                     f"{'yes' if r <= 1.5 else 'no'} |")
+    for case in sorted({r["case"] for r in rows if r["case"].startswith("pile")}):
+        com, none = by.get((case, "com")), by.get((case, "none_sleep"))
+        if com and none:
+            r = ratio(com["wall_ms_per_sim_s"], none["wall_ms_per_sim_s"])
+            lines.append(f"| {case} drop: com <= 1.10x none | {r:.2f}x | "
+                         f"{'yes' if r <= 1.10 else 'no'} |")
+    for case in sorted({r["case"] for r in rows}):
+        points = [r for r in rows if r["case"] == case]
+        column = error_column(points)
+        nones = [r for r in points if r["mode"].startswith("none")]
+        coms = [r for r in points if r["mode"] == "com"]
+        if not nones or not coms or column == "penetration_mm":
+            continue
+        beaten = sum(
+            1 for n in nones
+            if any(error_value(c, column) <= error_value(n, column)
+                   and c["wall_ms_per_sim_s"] < n["wall_ms_per_sim_s"] for c in coms))
+        lines.append(f"| {case}: for each error level com is faster | com beats {beaten} of "
+                     f"{len(nones)} none settings at equal or lower error | "
+                     f"{'yes' if beaten == len(nones) else 'no'} |")
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    rows = load(sys.argv[1])
+    out_dir = sys.argv[2]
+    os.makedirs(out_dir, exist_ok=True)
+    for case in sorted({r["case"] for r in rows}):
+        plot_pareto(case, [r for r in rows if r["case"] == case], out_dir)
+    plot_scaling(rows, out_dir)
+    table = targets(rows)
+    stem = os.path.splitext(os.path.basename(sys.argv[1]))[0]
+    with open(os.path.join(out_dir, f"{stem}_targets.md"), "w") as f:
+        f.write(table)
+    print(table)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds the package and runs the benchmark: run time against error, every
+# mode side by side on one core, then the plots and the table of targets.
+# Usage: run_bench.sh quick|full   (quick: a subset in under three minutes)
+set -eo pipefail
+source "$(dirname "$0")/env.sh"
+plan="${1:-quick}"
+case "${plan}" in quick|full) ;; *) echo "run_bench.sh: quick or full" >&2; exit 2 ;; esac
+"${repo_root}/scripts/build.sh"
+results="${repo_root}/bench/results"
+mkdir -p "${results}"
+csv="${results}/bench_${plan}.csv"
+echo "Running the ${plan} benchmark into ${csv} (one row per case and setting)"
+# taskset: one core, so the two modes of a row compete for nothing.
+runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_bench" "--${plan}" "${csv}")
+if command -v taskset >/dev/null; then runner=(taskset -c 0 "${runner[@]}"); fi
+"${runner[@]}"
+/usr/bin/python3 "${repo_root}/bench/plot_bench.py" "${csv}" "${results}"
+{ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
+  echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/bench_${plan}_machine.txt"

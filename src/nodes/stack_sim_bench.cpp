@@ -1,0 +1,46 @@
+// stack_sim_bench: run time against error, side by side on one core, as CSV.
+#include <cstring>
+#include <fstream>
+#include <iostream>
+
+#include "brick_stack_sim/core/benchmark.h"
+
+using namespace brick_stack_sim;
+
+int main(int argc, char** argv) {
+  const bool full = argc > 1 && std::strcmp(argv[1], "--full") == 0;
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  if ((!full && !quick) || argc != 3) {
+    std::cerr << "usage: stack_sim_bench --quick|--full OUTPUT.csv\n";
+    return 2;
+  }
+  BenchContext context;
+  const std::string data = BRICK_STACK_SIM_DATA_DIR;
+  context.scene_dirs = {data + "/scenes"};
+  if (Status loaded = BrickTypeLibrary::load(data + "/urdf/bricks.urdf",
+                                             data + "/config/bricks.yaml", &context.types);
+      !loaded) {
+    std::cerr << "stack_sim_bench: " << loaded.message << "\n";
+    return 1;
+  }
+  std::ofstream csv(argv[2]);
+  if (!csv) {
+    std::cerr << "stack_sim_bench: cannot write " << argv[2] << "\n";
+    return 1;
+  }
+  csv << benchCsvHeader();
+  const BenchPlan plan = full ? fullBenchPlan() : quickBenchPlan();
+  for (const BenchCase& bench_case : plan.cases) {
+    for (const BenchSetting& setting : bench_case.settings) {
+      BenchRow row;
+      if (Status ran = runBenchCase(bench_case, setting, context, plan.divergence, &row); !ran) {
+        std::cerr << "stack_sim_bench: " << bench_case.label << ": " << ran.message << "\n";
+        return 1;
+      }
+      const std::string line = toCsv(row);
+      csv << line << std::flush;
+      std::cerr << line;
+    }
+  }
+  return 0;
+}
