@@ -1,5 +1,6 @@
 // Builds a tower through /brick_sim/place_brick, one brick per second of sim
-// time, then prints how many bricks still stand where they were placed.
+// time, then prints how many bricks still stand where they were placed and how
+// many of them the stability layer holds frozen (STABLE).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -107,11 +108,13 @@ int main(int argc, char** argv) {
     return 1;
   }
   int fallen = 0;
+  int stable = 0;  // frozen by the stability layer; always 0 in mode none
   for (const Placed& mine : placed) {
     bool found = false;
     for (const auto& brick : bricks.response.bricks) {
       if (brick.id != mine.id) continue;
       found = true;
+      if (brick.state == brick_stack_sim::Brick::STABLE) ++stable;
       const auto& p = brick.pose.position;
       const double moved =
           std::sqrt((p.x - mine.x) * (p.x - mine.x) + (p.y - mine.y) * (p.y - mine.y) +
@@ -121,8 +124,10 @@ int main(int argc, char** argv) {
     if (!found) ++fallen;  // gone: removed by someone, or never there
   }
   const int count = static_cast<int>(placed.size());
-  std::printf("demo summary: placed %d, standing %d, fallen %d, refused %d (t=%.1f s)\n", count,
-              count - fallen, fallen, refused, ros::Time::now().toSec());
+  std::printf(
+      "demo summary: placed %d, standing %d, fallen %d, refused %d, stable (frozen) %d "
+      "(t=%.1f s)\n",
+      count, count - fallen, fallen, refused, stable, ros::Time::now().toSec());
   std::fflush(stdout);
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "brick_stack_sim/ros/conversions.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace brick_stack_sim {
@@ -130,8 +131,8 @@ Status toMsg(const BrickSnapshot& brick, Brick* msg) {
   if (!allFinite(brick.pose)) return Status::error("brick " + brick.id + ": pose is not finite");
   if (!brick.linear_velocity.allFinite() || !brick.angular_velocity.allFinite())
     return Status::error("brick " + brick.id + ": twist is not finite");
-  if (!brick.com_above.allFinite() || !std::isfinite(brick.mass_above) ||
-      !std::isfinite(brick.margin))
+  const double margin = brick.margin;
+  if (!brick.com_above.allFinite() || !std::isfinite(brick.mass_above) || !std::isfinite(margin))
     return Status::error("brick " + brick.id + ": com_above, mass_above or margin is not finite");
   if (!brick.size.allFinite() || !std::isfinite(brick.mass) || !std::isfinite(brick.placed_at))
     return Status::error("brick " + brick.id + ": size, mass or placed_at is not finite");
@@ -146,7 +147,7 @@ Status toMsg(const BrickSnapshot& brick, Brick* msg) {
   msg->com_above = toPointMsg(brick.com_above);
   msg->mass_above = brick.mass_above;
   msg->supported_by = brick.supported_by;
-  msg->margin = brick.margin;
+  msg->margin = margin;
   msg->asleep = brick.asleep;
   msg->fell_off = brick.fell_off;
   msg->placed_at = brick.placed_at;

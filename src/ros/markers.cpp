@@ -1,5 +1,7 @@
 #include "brick_stack_sim/ros/markers.h"
 
+#include <cmath>
+
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace brick_stack_sim {
@@ -7,13 +9,71 @@ namespace ros_adapter {
 
 namespace {
 
-std_msgs::ColorRGBA rgb(float r, float g, float b) {
+std_msgs::ColorRGBA rgb(float r, float g, float b, float a = 1.0f) {
   std_msgs::ColorRGBA color;
   color.r = r;
   color.g = g;
   color.b = b;
-  color.a = 1.0f;
+  color.a = a;
   return color;
+}
+
+/// A marker with everything but its geometry: header, namespace, id, ADD, and
+/// an identity pose (RViz warns about the all-zero quaternion of a default one).
+visualization_msgs::Marker newMarker(const std::string& frame_id, const ros::Time& stamp,
+                                     const char* ns, int id, int type) {
+  visualization_msgs::Marker marker;
+  marker.header.frame_id = frame_id;
+  marker.header.stamp = stamp;
+  marker.ns = ns;
+  marker.id = id;
+  marker.type = type;
+  marker.action = visualization_msgs::Marker::ADD;
+  marker.pose.orientation.w = 1.0;
+  marker.frame_locked = false;
+  return marker;
+}
+
+bool allFinite(const std::vector<Eigen::Vector3d>& polygon) {
+  for (const Eigen::Vector3d& vertex : polygon)
+    if (!vertex.allFinite()) return false;
+  return true;
+}
+
+/// Appends the fan triangulation of a convex polygon (counter-clockwise from
+/// above, so every triangle faces up), lifted by `lift` [m]. A fan of a convex
+/// polygon covers it exactly, without overlap. Nothing for fewer than three
+/// vertices or a non-finite one.
+void appendFan(const std::vector<Eigen::Vector3d>& polygon, double lift,
+               std::vector<geometry_msgs::Point>* triangles) {
+  if (polygon.size() < 3 || !allFinite(polygon)) return;
+  const Eigen::Vector3d up(0.0, 0.0, lift);
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+    triangles->push_back(toPointMsg(polygon[0] + up));
+    triangles->push_back(toPointMsg(polygon[i] + up));
+    triangles->push_back(toPointMsg(polygon[i + 1] + up));
+  }
+}
+
+/// The height the COM-above ray ends at [m]: the combined hull's (the mean
+/// support height), else the mean of the patches' vertices; false when the
+/// brick rests on nothing.
+bool supportHeight(const SupportGeometry& geometry, double* height) {
+  if (!geometry.combined_hull.empty()) {
+    *height = geometry.combined_hull.front().z();
+    return std::isfinite(*height);
+  }
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const SupportGeometry::Patch& patch : geometry.patches) {
+    for (const Eigen::Vector3d& vertex : patch.polygon) {
+      sum += vertex.z();
+      ++count;
+    }
+  }
+  if (count == 0) return false;
+  *height = sum / static_cast<double>(count);
+  return std::isfinite(*height);
 }
 
 }  // namespace
@@ -53,9 +113,17 @@ std_msgs::ColorRGBA brickColor(BrickLook look) {
 
 int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.serial); }
 
+int patchMarkerId(const BrickSnapshot& brick) { return 2 * static_cast<int>(brick.serial); }
+int hullMarkerId(const BrickSnapshot& brick) { return 2 * static_cast<int>(brick.serial) + 1; }
+
+std_msgs::ColorRGBA comAboveColor(double margin) {
+  // Brighter than the box colours, so a ray inside a green stable brick stands out.
+  return margin > 0.0 ? rgb(0.20f, 1.00f, 0.20f) : rgb(1.00f, 0.10f, 0.10f);
+}
+
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
-                                                 const ros::Time& stamp) {
+                                                 const ros::Time& stamp, float alpha) {
   visualization_msgs::MarkerArray array;
   array.markers.reserve(bricks.size() + 1);
   visualization_msgs::Marker clear;
@@ -77,9 +145,71 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
     marker.pose = toPoseMsg(brick.pose);
     marker.scale = toVectorMsg(brick.size);
     marker.color = brickColor(brickLook(brick));
+    marker.color.a = alpha;
     marker.frame_locked = false;
     array.markers.push_back(marker);
   }
+  return array;
+}
+
+visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnapshot>& bricks,
+                                                     const SupportGeometryMap& supports,
+                                                     const std::string& frame_id,
+                                                     const ros::Time& stamp) {
+  using visualization_msgs::Marker;
+  visualization_msgs::MarkerArray array;
+  for (const BrickSnapshot& brick : bricks) {
+    const auto found = supports.find(brick.id);
+    if (found == supports.end()) continue;
+    const SupportGeometry& geometry = found->second;
+
+    double height = 0.0;
+    if (geometry.com_above.allFinite() && std::isfinite(geometry.margin) &&
+        supportHeight(geometry, &height)) {
+      Marker ray = newMarker(frame_id, stamp, kComAboveMarkerNamespace, brickMarkerId(brick),
+                             Marker::LINE_LIST);
+      const Eigen::Vector3d top = geometry.com_above;
+      const Eigen::Vector3d foot(top.x(), top.y(), height);
+      const double arm = kComAboveFootSize;
+      for (const Eigen::Vector3d& point :
+           {top, foot, Eigen::Vector3d(foot + Eigen::Vector3d(-arm, 0, 0)),
+            Eigen::Vector3d(foot + Eigen::Vector3d(arm, 0, 0)),
+            Eigen::Vector3d(foot + Eigen::Vector3d(0, -arm, 0)),
+            Eigen::Vector3d(foot + Eigen::Vector3d(0, arm, 0))})
+        ray.points.push_back(toPointMsg(point));
+      ray.scale.x = kComAboveLineWidth;  // LINE_LIST: only x, the line width
+      ray.color = comAboveColor(geometry.margin);
+      array.markers.push_back(ray);
+    }
+
+    Marker patches = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, patchMarkerId(brick),
+                               Marker::TRIANGLE_LIST);
+    for (const SupportGeometry::Patch& patch : geometry.patches)
+      appendFan(patch.polygon, kContactMeshLift, &patches.points);
+    // The hull sits just under the patches so that they show through it.
+    Marker hull = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, hullMarkerId(brick),
+                            Marker::TRIANGLE_LIST);
+    appendFan(geometry.combined_hull, 0.5 * kContactMeshLift, &hull.points);
+    patches.scale.x = patches.scale.y = patches.scale.z = 1.0;  // TRIANGLE_LIST: a factor
+    hull.scale = patches.scale;
+    patches.color = rgb(0.10f, 0.55f, 1.00f, 0.90f);  // blue
+    hull.color = rgb(1.00f, 0.85f, 0.10f, 0.35f);     // translucent yellow
+    // Empty lists are left out (RViz flags a TRIANGLE_LIST without points as
+    // an error); the DELETEALL at the head of every array removes old ones.
+    if (!patches.points.empty()) array.markers.push_back(patches);
+    if (!hull.points.empty()) array.markers.push_back(hull);
+  }
+  return array;
+}
+
+visualization_msgs::MarkerArray makeMarkers(const std::vector<BrickSnapshot>& bricks,
+                                            const SupportGeometryMap& supports,
+                                            const std::string& frame_id, const ros::Time& stamp,
+                                            float brick_alpha) {
+  visualization_msgs::MarkerArray array = makeBrickMarkers(bricks, frame_id, stamp, brick_alpha);
+  visualization_msgs::MarkerArray stability =
+      makeStabilityMarkers(bricks, supports, frame_id, stamp);
+  array.markers.insert(array.markers.end(), stability.markers.begin(), stability.markers.end());
   return array;
 }
 

@@ -45,7 +45,11 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   ros::NodeHandle& nh = self.node_handle_;
   self.bricks_publisher_ = nh.advertise<BrickArray>(kBricksTopic, 10);
   self.events_publisher_ = nh.advertise<StabilityEvent>(kEventsTopic, kEventQueueSize);
-  self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(kMarkersTopic, 2);
+  // A viewer that connects while nothing changes (paused, or a fully frozen
+  // stack) would otherwise wait for the next change to see anything.
+  self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(
+      kMarkersTopic, 2,
+      [&self](const ros::SingleSubscriberPublisher&) { self.state_dirty_ = true; });
   if (options.publish_clock)
     self.clock_publisher_ = nh.advertise<rosgraph_msgs::Clock>(kClockTopic, 10);
 
@@ -206,9 +210,21 @@ void SimNode::publishState() {
   }
   bricks_publisher_.publish(array);
   if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
-  // Markers cost a message per brick: built only for someone who looks.
-  if (markers_publisher_.getNumSubscribers() > 0)
-    markers_publisher_.publish(makeBrickMarkers(finite, options_.frame_id, now));
+  // Markers cost a message per brick and a support-geometry query each:
+  // built only for someone who looks.
+  if (markers_publisher_.getNumSubscribers() > 0) publishMarkers(finite, now);
+}
+
+void SimNode::publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp) {
+  SupportGeometryMap supports;
+  for (const BrickSnapshot& brick : bricks) {
+    SupportGeometry geometry;
+    // False in mode none and for bricks the model knows nothing of.
+    if (world_->supportGeometry(brick.id, &geometry)) supports.emplace(brick.id, geometry);
+  }
+  // In mode none there is nothing inside the bricks to see through them for.
+  const float alpha = options_.world.mode == StabilityMode::kNone ? 1.0f : kTranslucentBrickAlpha;
+  markers_publisher_.publish(makeMarkers(bricks, supports, options_.frame_id, stamp, alpha));
 }
 
 void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused) {

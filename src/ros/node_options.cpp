@@ -205,6 +205,12 @@ Status validate(const NodeOptions& options) {
   return Status::success();
 }
 
+WorldOptions defaultNodeWorldOptions() {
+  WorldOptions world;
+  world.mode = StabilityMode::kCom;
+  return world;
+}
+
 Status loadNodeOptions(const ParameterReader& params, NodeOptions* options) {
   NodeOptions result = *options;
   WorldOptions& world = result.world;
@@ -223,6 +229,16 @@ Status loadNodeOptions(const ParameterReader& params, NodeOptions* options) {
   if (!load.status) return load.status;
   if (Status parsed = parseStabilityMode(mode, &world.mode); !parsed)
     return bad("stability/mode", "'" + mode + "'", parsed.message);
+  // Read in every mode so that a bad value is refused even while unused.
+  StabilityOptions& stability = world.stability;
+  load.number("stability/rest_linear_speed", &stability.rest_linear_speed);
+  load.number("stability/rest_angular_speed", &stability.rest_angular_speed);
+  load.number("stability/rest_time", &stability.rest_time);
+  load.number("stability/impact_speed", &stability.impact_speed);
+  load.number("stability/support_normal_tolerance", &stability.support_normal_tolerance);
+  load.number("stability/flush_angle", &stability.flush_angle);
+  load.number("stability/contact_distance", &stability.contact_distance);
+  load.number("stability/min_margin", &stability.min_margin);
 
   load.boolean("sleeping/enabled", &world.sleeping);
   load.number("sleeping/linear_threshold", &world.linear_sleep_threshold);

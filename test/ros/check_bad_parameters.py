@@ -63,6 +63,12 @@ class BadParameters(unittest.TestCase):
     def test_unknown_mode(self):
         self.check_refused(["_stability/mode:=magic"], "~stability/mode", "magic")
 
+    def test_bad_stability_threshold(self):
+        self.check_refused(["_stability/rest_time:=-1"], "~stability/rest_time", "-1")
+
+    def test_stability_threshold_of_wrong_type(self):
+        self.check_refused(["_stability/min_margin:=wide"], "~stability/min_margin", "wide")
+
     def test_table_size_not_a_list(self):
         self.check_refused(["_table/size:=[1.0, 0.5, 0.2]"], "~table/size")
 

@@ -1,5 +1,6 @@
 // Message <-> core conversions: every non-finite or non-unit input is refused
 // with the field named; snapshots and events reach the messages unchanged.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -11,6 +12,7 @@
 
 #include "brick_stack_sim/ros/conversions.h"
 #include "brick_stack_sim/ros/markers.h"
+#include "com_world.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -180,6 +182,56 @@ TEST(Conversions, SnapshotToMessageRoundTrip) {
   EXPECT_EQ(msg.placed_at, 4.25);
 }
 
+// The stability fields of Brick.msg as the real stability layer fills them:
+// a two-layer tower, each value from hand statics.
+TEST(Conversions, FrozenTowerBricksAreStableWithTheirSupportsAndLoads) {
+  auto world = test::makeComWorld();
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(world->addBrick(test::towerBrick(i)).ok) << i;
+  BrickPlacement falling = test::towerBrick(0);
+  falling.id = "falling";
+  falling.pose.translation() = Eigen::Vector3d(0.3, 0.2, 0.05);
+  ASSERT_TRUE(world->addBrick(falling).ok);
+  test::runFor(world.get(), 0.05);  // 12 mm of fall: still in the air
+
+  double brick_mass = 0.0;
+  for (const BrickSnapshot& snapshot : world->snapshot()) {
+    Brick msg;
+    const Status converted = toMsg(snapshot, &msg);
+    ASSERT_TRUE(converted.ok) << converted.message;
+    EXPECT_EQ(msg.com_above.x, snapshot.com_above.x()) << snapshot.id;
+    EXPECT_EQ(msg.com_above.z, snapshot.com_above.z()) << snapshot.id;
+    EXPECT_EQ(msg.mass_above, snapshot.mass_above) << snapshot.id;
+    if (!snapshot.supported_by.empty()) {
+      EXPECT_EQ(msg.margin, snapshot.margin) << snapshot.id;
+    }
+    EXPECT_EQ(msg.supported_by, snapshot.supported_by) << snapshot.id;
+    brick_mass = msg.mass;
+    if (msg.id == "falling") {
+      EXPECT_EQ(msg.state, Brick::DYNAMIC);
+      EXPECT_TRUE(msg.supported_by.empty());
+      EXPECT_EQ(msg.margin, 0.0) << "resting on nothing: no hull to measure";
+      continue;
+    }
+    EXPECT_EQ(msg.state, Brick::STABLE) << msg.id;
+    // Both layers rest on a hull 23.4 mm wide across their COM-above.
+    EXPECT_NEAR(msg.margin, test::kKaplaWidth / 2, 1e-4) << msg.id;
+    std::vector<std::string> supporters = msg.supported_by;
+    std::sort(supporters.begin(), supporters.end());
+    if (msg.id == "t0" || msg.id == "t1") {
+      EXPECT_EQ(supporters, std::vector<std::string>{"table"}) << msg.id;
+      // Itself plus half of each upper brick, by symmetry.
+      EXPECT_NEAR(msg.mass_above, 2 * msg.mass, 1e-9) << msg.id;
+    } else {
+      EXPECT_EQ(supporters, (std::vector<std::string>{"t0", "t1"})) << msg.id;
+      EXPECT_NEAR(msg.mass_above, msg.mass, 1e-9) << msg.id;  // carries nothing
+      EXPECT_NEAR(msg.com_above.x, msg.pose.position.x, 1e-6) << msg.id;
+      EXPECT_NEAR(msg.com_above.y, msg.pose.position.y, 1e-6) << msg.id;
+      EXPECT_NEAR(msg.com_above.z, msg.pose.position.z, 1e-6) << msg.id;
+    }
+  }
+  EXPECT_NEAR(brick_mass, 0.0119, 1e-9);
+}
+
 TEST(Conversions, NonFiniteSnapshotIsNotConverted) {
   const std::vector<std::function<void(BrickSnapshot&)>> spoil = {
       [](BrickSnapshot& b) { b.pose.translation().x() = kNaN; },
@@ -189,6 +241,15 @@ TEST(Conversions, NonFiniteSnapshotIsNotConverted) {
       [](BrickSnapshot& b) { b.com_above.y() = kNaN; },
       [](BrickSnapshot& b) { b.mass_above = kNaN; },
       [](BrickSnapshot& b) { b.margin = kInf; },
+      [](BrickSnapshot& b) { b.margin = -kInf; },
+      [](BrickSnapshot& b) {
+        b.supported_by.clear();  // resting on nothing: the core says 0, never -inf
+        b.margin = -kInf;
+      },
+      [](BrickSnapshot& b) {
+        b.supported_by.clear();
+        b.margin = kNaN;
+      },
   };
   for (std::size_t i = 0; i < spoil.size(); ++i) {
     BrickSnapshot brick = sampleSnapshot();

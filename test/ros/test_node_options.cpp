@@ -45,7 +45,17 @@ TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
   const WorldOptions defaults;
   EXPECT_EQ(options.world.time_step, defaults.time_step);
   EXPECT_EQ(options.world.solver_iterations, defaults.solver_iterations);
-  EXPECT_EQ(options.world.mode, StabilityMode::kNone);
+  // The node runs the stack stability layer unless told otherwise.
+  EXPECT_EQ(options.world.mode, StabilityMode::kCom);
+  const StabilityOptions& stability = options.world.stability;
+  EXPECT_EQ(stability.rest_linear_speed, defaults.stability.rest_linear_speed);
+  EXPECT_EQ(stability.rest_angular_speed, defaults.stability.rest_angular_speed);
+  EXPECT_EQ(stability.rest_time, defaults.stability.rest_time);
+  EXPECT_EQ(stability.impact_speed, defaults.stability.impact_speed);
+  EXPECT_EQ(stability.support_normal_tolerance, defaults.stability.support_normal_tolerance);
+  EXPECT_EQ(stability.flush_angle, defaults.stability.flush_angle);
+  EXPECT_EQ(stability.contact_distance, defaults.stability.contact_distance);
+  EXPECT_EQ(stability.min_margin, defaults.stability.min_margin);
   EXPECT_EQ(options.world.table.size, defaults.table.size);
   EXPECT_EQ(options.frame_id, "world");
   EXPECT_TRUE(options.scene_dirs.empty());
@@ -62,6 +72,14 @@ TEST(NodeOptions, ReadsEveryParameter) {
   params.set("real_time_factor", 0.0);
   params.set("frame_id", std::string("map"));
   params.set("stability/mode", std::string("none"));
+  params.set("stability/rest_linear_speed", 0.004);
+  params.set("stability/rest_angular_speed", 0.04);
+  params.set("stability/rest_time", 0.05);
+  params.set("stability/impact_speed", 0.1);
+  params.set("stability/support_normal_tolerance", 0.3);
+  params.set("stability/flush_angle", 0.003);
+  params.set("stability/contact_distance", 0.0002);
+  params.set("stability/min_margin", 0);  // an int where a double is expected
   params.set("sleeping/enabled", false);
   params.set("sleeping/linear_threshold", 0.01);
   params.set("sleeping/angular_threshold", 0.1);
@@ -87,6 +105,16 @@ TEST(NodeOptions, ReadsEveryParameter) {
   EXPECT_TRUE(options.publish_clock);
   EXPECT_EQ(options.real_time_factor, 0.0);
   EXPECT_EQ(options.frame_id, "map");
+  EXPECT_EQ(options.world.mode, StabilityMode::kNone);
+  const StabilityOptions& stability = options.world.stability;
+  EXPECT_EQ(stability.rest_linear_speed, 0.004);
+  EXPECT_EQ(stability.rest_angular_speed, 0.04);
+  EXPECT_EQ(stability.rest_time, 0.05);
+  EXPECT_EQ(stability.impact_speed, 0.1);
+  EXPECT_EQ(stability.support_normal_tolerance, 0.3);
+  EXPECT_EQ(stability.flush_angle, 0.003);
+  EXPECT_EQ(stability.contact_distance, 0.0002);
+  EXPECT_EQ(stability.min_margin, 0.0);
   EXPECT_FALSE(options.world.sleeping);
   EXPECT_EQ(options.world.linear_sleep_threshold, 0.01);
   EXPECT_EQ(options.world.angular_sleep_threshold, 0.1);
@@ -133,6 +161,58 @@ TEST(NodeOptions, RefusesBadNumbers) {
   expectRefused("table/restitution", 1.5);
   expectRefused("overlap_tolerance", -1e-4);
   expectRefused("fall_off_depth", 0.0);
+}
+
+TEST(NodeOptions, RefusesBadStabilityThresholds) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // The value is named along with the parameter.
+  const std::string message = expectRefused("stability/rest_linear_speed", -0.005);
+  EXPECT_NE(message.find("-0.005"), std::string::npos) << message;
+  expectRefused("stability/rest_linear_speed", 0.0);  // nothing would ever be at rest
+  expectRefused("stability/rest_linear_speed", kNaN);
+  expectRefused("stability/rest_angular_speed", 0.0);
+  expectRefused("stability/rest_angular_speed", kInf);
+  expectRefused("stability/rest_time", -0.01);
+  expectRefused("stability/rest_time", kNaN);
+  expectRefused("stability/impact_speed", 0.0);
+  expectRefused("stability/impact_speed", -1.0);
+  expectRefused("stability/support_normal_tolerance", 0.0);
+  expectRefused("stability/support_normal_tolerance", M_PI / 2);  // walls would support
+  expectRefused("stability/support_normal_tolerance", kNaN);
+  expectRefused("stability/flush_angle", -0.001);
+  expectRefused("stability/flush_angle", 0.2);
+  expectRefused("stability/contact_distance", 0.0);
+  expectRefused("stability/contact_distance", 0.05);  // half a brick away is not touching
+  expectRefused("stability/min_margin", -0.001);
+  expectRefused("stability/min_margin", 0.02);
+  expectRefused("stability/min_margin", kInf);
+  // Wrong types, too.
+  expectRefused("stability/rest_time", std::string("short"));
+  expectRefused("stability/flush_angle", true);
+}
+
+TEST(NodeOptions, StabilityThresholdsAreCheckedInModeNone) {
+  // A typo must not wait until someone switches the layer on.
+  MapParameterReader params;
+  params.set("stability/mode", std::string("none"));
+  params.set("stability/rest_time", -1.0);
+  NodeOptions options;
+  const Status status = loadNodeOptions(params, &options);
+  EXPECT_FALSE(status.ok);
+  EXPECT_NE(status.message.find("~stability/rest_time"), std::string::npos) << status.message;
+}
+
+TEST(NodeOptions, AcceptsBoundaryStabilityThresholds) {
+  MapParameterReader params;
+  params.set("stability/rest_time", 0.0);    // at rest as soon as it is slow
+  params.set("stability/flush_angle", 0.0);  // only exactly parallel faces are flush
+  params.set("stability/min_margin", 0.01);
+  NodeOptions options;
+  const Status status = loadNodeOptions(params, &options);
+  ASSERT_TRUE(status.ok) << status.message;
+  EXPECT_EQ(options.world.stability.rest_time, 0.0);
+  EXPECT_EQ(options.world.stability.min_margin, 0.01);
 }
 
 TEST(NodeOptions, RefusesBadStrings) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,30 @@
 namespace brick_stack_sim {
 namespace ros_adapter {
 
-/// Marker namespace of the brick boxes (DESIGN.md section 3).
+// Marker namespaces (DESIGN.md section 3).
+/// A box per brick, coloured by state.
 constexpr char kBrickMarkerNamespace[] = "bricks";
+/// A ray per brick from its COM-above straight down to its support height.
+constexpr char kComAboveMarkerNamespace[] = "com_above";
+/// Per brick: its support patches, and their combined hull.
+constexpr char kContactMeshMarkerNamespace[] = "contact_mesh";
+
+/// Alpha of the brick boxes when stability markers are drawn: the COM-above
+/// rays and contact meshes lie inside the stack (a patch is the interface of
+/// two bricks), so opaque boxes would hide every one of them.
+constexpr float kTranslucentBrickAlpha = 0.45f;
+/// How far the contact meshes are drawn above the support surface [m]: enough
+/// to win the depth test against the supporting face, far below anything a
+/// viewer could read as a gap.
+constexpr double kContactMeshLift = 1e-4;
+/// Line width of the COM-above rays [m]: visible next to an 8 mm brick.
+constexpr double kComAboveLineWidth = 0.0012;
+/// Half the arms of the cross marking the foot of a COM-above ray [m].
+constexpr double kComAboveFootSize = 0.004;
+
+/// Support geometry per brick id, as BrickWorld::supportGeometry() gives it.
+/// Bricks the stability model does not describe are simply absent.
+using SupportGeometryMap = std::map<std::string, SupportGeometry>;
 
 /// What a brick's colour shows, most telling first: a brick that fell off is
 /// shown as such whatever the simulator does with it, and Bullet's sleep is
@@ -31,10 +54,45 @@ int brickMarkerId(const BrickSnapshot& brick);
 /// One CUBE per brick (scale = size [m], pose of its centre) in `frame_id`,
 /// namespace kBrickMarkerNamespace, after one DELETEALL marker so that bricks
 /// removed since the last array disappear. Bricks with a non-finite pose or
-/// size are left out (RViz would drop the whole array).
+/// size are left out (RViz would drop the whole array). `alpha` is the
+/// opacity of every box [0, 1].
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
-                                                 const ros::Time& stamp);
+                                                 const ros::Time& stamp, float alpha = 1.0f);
+
+/// Colour of a COM-above ray: green while the projection of the COM-above is
+/// inside the support hull (margin > 0 [m]), red on or outside its edge.
+std_msgs::ColorRGBA comAboveColor(double margin);
+
+/// Marker ids of a brick in kContactMeshMarkerNamespace: its support patches
+/// and its combined hull, two per brick so both keep their ids for the brick's
+/// whole life. In kComAboveMarkerNamespace the id is brickMarkerId().
+int patchMarkerId(const BrickSnapshot& brick);
+int hullMarkerId(const BrickSnapshot& brick);
+
+/// The stability layer's picture of every brick of `bricks` found in
+/// `supports`, in `frame_id`:
+/// - kComAboveMarkerNamespace: a LINE_LIST whose first segment runs from the
+///   COM-above straight down to the support height (the z of the combined
+///   hull), followed by a small cross at its foot; coloured by comAboveColor().
+///   Left out when the brick has no support (nothing to point at).
+/// - kContactMeshMarkerNamespace: a TRIANGLE_LIST of the support patches (a
+///   fan per patch polygon of three or more vertices) and a translucent one of
+///   the combined hull, each lifted kContactMeshLift above its polygon.
+///   Degenerate polygons (a point or an edge) have no area and draw nothing.
+/// Anything with a non-finite number is left out: RViz drops a whole array
+/// for one NaN. No DELETEALL: see makeMarkers().
+visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnapshot>& bricks,
+                                                     const SupportGeometryMap& supports,
+                                                     const std::string& frame_id,
+                                                     const ros::Time& stamp);
+
+/// Everything the node publishes on ~markers: makeBrickMarkers() (DELETEALL
+/// first, boxes with `brick_alpha`) followed by makeStabilityMarkers().
+visualization_msgs::MarkerArray makeMarkers(const std::vector<BrickSnapshot>& bricks,
+                                            const SupportGeometryMap& supports,
+                                            const std::string& frame_id, const ros::Time& stamp,
+                                            float brick_alpha);
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

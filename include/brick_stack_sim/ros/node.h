@@ -82,6 +82,8 @@ class SimNode {
   ros::Time stamp() const;
   void publishEvents();
   void publishState();
+  /// ~markers for `bricks` (all finite): boxes, COM-above rays, contact meshes.
+  void publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp);
   void publishClock();
   void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
 

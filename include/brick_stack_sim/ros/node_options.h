@@ -13,10 +13,16 @@
 namespace brick_stack_sim {
 namespace ros_adapter {
 
+/// The world options the node starts from: the core's defaults with the stack
+/// stability layer on (mode com), because that layer is why users pick this
+/// package; `stability/mode: none` is the plain-Bullet baseline.
+WorldOptions defaultNodeWorldOptions();
+
 /// Everything the node needs to start, read from its private parameters
-/// (DESIGN.md section 3). Defaults are those of WorldOptions and config/sim.yaml.
+/// (DESIGN.md section 3). Defaults are those of defaultNodeWorldOptions() and
+/// config/sim.yaml, config/stability.yaml.
 struct NodeOptions {
-  WorldOptions world;
+  WorldOptions world = defaultNodeWorldOptions();
   double publish_rate = 30.0;           ///< ~bricks, tf and markers per second of sim time [Hz].
   bool publish_clock = false;           ///< Publish /clock so the graph can run on sim time.
   double real_time_factor = 1.0;        ///< Sim time per wall time [-]; 0 = as fast as possible.

@@ -1,0 +1,304 @@
+// The node in mode com, driven through its services: a three-layer tower
+// freezes brick by brick with the support graph the geometry gives, removing
+// a middle brick wakes exactly the bricks it carried, ~markers shows the
+// stability layer, and a brick past the table edge is never called stable.
+// Each test pauses the node and advances it with ~step, so sim time is exact.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/RemoveBrick.h"
+#include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/StabilityEvent.h"
+#include "brick_stack_sim/StepSimulation.h"
+#include "brick_stack_sim/core/world_options.h"
+
+namespace {
+
+using namespace brick_stack_sim;
+using visualization_msgs::Marker;
+using visualization_msgs::MarkerArray;
+
+// KAPLA and the core's tower generator (DESIGN.md section 5).
+constexpr double kThickness = 0.0078;  ///< [m]
+constexpr double kOffset = 0.0468;   ///< Half of (length - width): bricks rest across the ends [m].
+constexpr double kTableHalfX = 0.6;  ///< The default 1.2 x 0.8 m table, centred [m].
+
+/// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
+bool waitFor(const std::function<bool()>& done, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::WallTime::now() < end) {
+    if (done()) return true;
+    ros::WallDuration(0.01).sleep();
+  }
+  return done();
+}
+
+std::vector<std::string> sorted(std::vector<std::string> ids) {
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+class StabilityNode : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
+        << "the node did not come up";
+    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick");
+    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick");
+    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset");
+    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks");
+    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
+    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+    events_sub_ = nh_.subscribe<StabilityEvent>("/brick_sim/events", 1000,
+                                                [this](const StabilityEvent::ConstPtr& msg) {
+                                                  std::lock_guard<std::mutex> lock(mutex_);
+                                                  events_.push_back(*msg);
+                                                });
+    ASSERT_TRUE(waitFor([&] { return events_sub_.getNumPublishers() > 0; }, 10.0));
+    // Every test starts from a paused node and an empty table.
+    std_srvs::SetBool pause;
+    pause.request.data = true;
+    ASSERT_TRUE(pause_.call(pause) && pause.response.success);
+    ResetScene reset;
+    ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+    ros::WallDuration(0.2).sleep();  // the reset's removed events
+    clearEvents();
+  }
+
+  bool place(const std::string& id, double x, double y, double z, double yaw) {
+    PlaceBrick srv;
+    srv.request.id = id;
+    srv.request.type = "kapla";
+    srv.request.pose.position.x = x;
+    srv.request.pose.position.y = y;
+    srv.request.pose.position.z = z;
+    srv.request.pose.orientation.z = std::sin(yaw / 2);
+    srv.request.pose.orientation.w = std::cos(yaw / 2);
+    EXPECT_TRUE(place_.call(srv));
+    EXPECT_TRUE(srv.response.success) << id << ": " << srv.response.message;
+    return srv.response.success;
+  }
+
+  /// Brick `slot` (0 or 1) of `layer` of the core's tower generator.
+  bool placeTowerBrick(const std::string& id, int layer, int slot) {
+    const double across = slot == 0 ? -kOffset : kOffset;
+    const bool along_x = layer % 2 == 0;
+    return place(id, along_x ? 0.0 : across, along_x ? across : 0.0,
+                 kThickness / 2 + layer * kThickness, along_x ? 0.0 : M_PI / 2);
+  }
+
+  void step(unsigned steps) {
+    StepSimulation srv;
+    srv.request.steps = steps;
+    ASSERT_TRUE(step_.call(srv));
+    ASSERT_TRUE(srv.response.success) << srv.response.message;
+  }
+
+  std::map<std::string, Brick> bricks() {
+    GetBricks srv;
+    EXPECT_TRUE(get_.call(srv));
+    EXPECT_TRUE(srv.response.success) << srv.response.message;
+    std::map<std::string, Brick> by_id;
+    for (const Brick& b : srv.response.bricks) by_id[b.id] = b;
+    return by_id;
+  }
+
+  std::set<std::string> eventIds(uint8_t kind) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::set<std::string> ids;
+    for (const StabilityEvent& e : events_)
+      if (e.kind == kind) ids.insert(e.brick_id);
+    return ids;
+  }
+
+  std::optional<StabilityEvent> event(const std::string& id, uint8_t kind) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const StabilityEvent& e : events_)
+      if (e.brick_id == id && e.kind == kind) return e;
+    return std::nullopt;
+  }
+
+  void clearEvents() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    events_.clear();
+  }
+
+  ros::NodeHandle nh_;
+  ros::ServiceClient place_, remove_, reset_, get_, pause_, step_;
+  ros::Subscriber events_sub_;
+  std::mutex mutex_;
+  std::vector<StabilityEvent> events_;
+};
+
+TEST_F(StabilityNode, StabilityYamlHoldsTheBuiltInDefaults) {
+  // sim.launch loads config/stability.yaml; its values must be the ones the
+  // node would use without it, as its header says.
+  const StabilityOptions defaults;
+  const std::map<std::string, double> expected = {
+      {"rest_linear_speed", defaults.rest_linear_speed},
+      {"rest_angular_speed", defaults.rest_angular_speed},
+      {"rest_time", defaults.rest_time},
+      {"impact_speed", defaults.impact_speed},
+      {"support_normal_tolerance", defaults.support_normal_tolerance},
+      {"flush_angle", defaults.flush_angle},
+      {"contact_distance", defaults.contact_distance},
+      {"min_margin", defaults.min_margin}};
+  for (const auto& [name, value] : expected) {
+    double loaded = -1.0;
+    EXPECT_TRUE(nh_.getParam("/brick_sim/stability/" + name, loaded)) << name << " not loaded";
+    EXPECT_EQ(loaded, value) << name;
+  }
+  std::string mode;
+  EXPECT_TRUE(nh_.getParam("/brick_sim/stability/mode", mode));
+  EXPECT_EQ(mode, "com");
+}
+
+TEST_F(StabilityNode, TowerFreezesAndRemovalWakesExactlyTheBricksAbove) {
+  const std::vector<std::string> ids = {"l0a", "l0b", "l1a", "l1b", "l2a", "l2b"};
+  for (int i = 0; i < 6; ++i) ASSERT_TRUE(placeTowerBrick(ids[i], i / 2, i % 2));
+  step(100);  // 0.1 s: longer than rest_time, for any brick not frozen at placement
+
+  const std::set<std::string> all(ids.begin(), ids.end());
+  EXPECT_TRUE(waitFor([&] { return eventIds(StabilityEvent::FROZEN) == all; }, 10.0))
+      << "frozen events for " << eventIds(StabilityEvent::FROZEN).size() << " of 6 bricks";
+  EXPECT_TRUE(eventIds(StabilityEvent::WOKEN).empty()) << "a resting tower woke up";
+
+  std::map<std::string, Brick> tower = bricks();
+  ASSERT_EQ(tower.size(), 6u);
+  const std::map<std::string, std::vector<std::string>> supporters = {
+      {"l0a", {"table"}},      {"l0b", {"table"}},      {"l1a", {"l0a", "l0b"}},
+      {"l1b", {"l0a", "l0b"}}, {"l2a", {"l1a", "l1b"}}, {"l2b", {"l1a", "l1b"}}};
+  for (const auto& [id, expected] : supporters) {
+    const Brick& b = tower[id];
+    EXPECT_EQ(b.state, Brick::STABLE) << id;
+    EXPECT_EQ(sorted(b.supported_by), expected) << id;
+    EXPECT_GT(b.margin, 0.0) << id;
+    EXPECT_GE(b.mass_above, b.mass) << id;
+    EXPECT_FALSE(b.fell_off) << id;
+  }
+  // The load runs down the tower: the bottom carries everything above it.
+  EXPECT_NEAR(tower["l0a"].mass_above + tower["l0b"].mass_above, 6 * tower["l0a"].mass, 1e-9);
+  EXPECT_NEAR(tower["l2a"].mass_above, tower["l2a"].mass, 1e-9);
+
+  // Removing a layer-1 brick takes the support from under both layer-2 bricks
+  // and from nothing else. Paused, so no fall can wake anything afterwards.
+  clearEvents();
+  RemoveBrick remove;
+  remove.request.id = "l1a";
+  ASSERT_TRUE(remove_.call(remove));
+  ASSERT_TRUE(remove.response.success) << remove.response.message;
+  const std::set<std::string> above = {"l2a", "l2b"};
+  EXPECT_TRUE(waitFor([&] { return eventIds(StabilityEvent::WOKEN) == above; }, 10.0));
+  ros::WallDuration(0.5).sleep();  // anything else would have arrived by now
+  EXPECT_EQ(eventIds(StabilityEvent::WOKEN), above);
+  const std::optional<StabilityEvent> woken = event("l2a", StabilityEvent::WOKEN);
+  ASSERT_TRUE(woken);
+  EXPECT_NE(woken->reason.find("l1a"), std::string::npos) << woken->reason;
+
+  tower = bricks();
+  EXPECT_EQ(tower.count("l1a"), 0u);
+  for (const char* id : {"l0a", "l0b", "l1b"}) EXPECT_EQ(tower[id].state, Brick::STABLE) << id;
+  for (const std::string& id : above) EXPECT_EQ(tower[id].state, Brick::DYNAMIC) << id;
+}
+
+TEST_F(StabilityNode, MarkersShowBricksComRaysAndContactMeshes) {
+  std::mutex mutex;
+  std::optional<MarkerArray> last;
+  ros::Subscriber sub =
+      nh_.subscribe<MarkerArray>("/brick_sim/markers", 10, [&](const MarkerArray::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        last = *msg;
+      });
+  ASSERT_TRUE(waitFor([&] { return sub.getNumPublishers() > 0; }, 10.0));
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(placeTowerBrick("m" + std::to_string(i), i / 2, i % 2));
+  step(100);
+
+  // The array that shows all four bricks frozen (earlier ones may predate that).
+  auto count = [](const MarkerArray& array, const std::string& ns) {
+    int n = 0;
+    for (const Marker& m : array.markers) n += m.ns == ns && m.action == Marker::ADD;
+    return n;
+  };
+  ASSERT_TRUE(waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return last && count(*last, "bricks") == 4 && count(*last, "com_above") == 4 &&
+               count(*last, "contact_mesh") == 8;
+      },
+      15.0))
+      << "no marker array with 4 bricks, 4 com_above rays and 8 contact meshes";
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(last->markers.front().action, Marker::DELETEALL);
+  std::set<int> ray_ids;
+  for (const Marker& m : last->markers) {
+    for (const geometry_msgs::Point& p : m.points)
+      EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << m.ns;
+    if (m.ns != "com_above") continue;
+    ray_ids.insert(m.id);
+    ASSERT_GE(m.points.size(), 2u);
+    EXPECT_GT(m.color.g, m.color.r) << "a stable brick's ray is not green";
+    EXPECT_GT(m.points[0].z, m.points[1].z);  // pointing down
+  }
+  EXPECT_EQ(ray_ids.size(), 4u) << "ray ids are not one per brick";
+}
+
+TEST_F(StabilityNode, BrickPastTheTableEdgeIsNeverStableThereAndFallsOff) {
+  // Along x with its centre 5 mm past the +x edge: statics says it tips off.
+  // The control, 5 mm inside the edge, must stay: the test tells them apart.
+  ASSERT_TRUE(place("over", kTableHalfX + 0.005, 0.0, kThickness / 2, 0.0));
+  ASSERT_TRUE(place("inside", kTableHalfX - 0.005, 0.3, kThickness / 2, 0.0));
+  auto stableOnTable = [](const Brick& b) {
+    const auto& s = b.supported_by;
+    return b.state == Brick::STABLE && std::find(s.begin(), s.end(), "table") != s.end();
+  };
+  EXPECT_FALSE(stableOnTable(bricks()["over"])) << "frozen on the table at placement";
+
+  const unsigned kChunk = 50;       // 50 ms of sim time between looks
+  const unsigned kMaxSteps = 5000;  // 5 s
+  unsigned stepped = 0;
+  while (stepped < kMaxSteps && !event("over", StabilityEvent::FELL_OFF)) {
+    step(kChunk);
+    stepped += kChunk;
+    const Brick over = bricks()["over"];
+    ASSERT_FALSE(stableOnTable(over)) << "STABLE on the table after " << stepped << " ms";
+    if (over.fell_off)
+      waitFor([&] { return event("over", StabilityEvent::FELL_OFF).has_value(); }, 5.0);
+  }
+  EXPECT_TRUE(event("over", StabilityEvent::FELL_OFF))
+      << "no fell_off event within " << stepped << " ms of sim time";
+  EXPECT_TRUE(bricks()["over"].fell_off);
+
+  const Brick inside = bricks()["inside"];
+  EXPECT_TRUE(stableOnTable(inside));
+  EXPECT_FALSE(inside.fell_off);
+  EXPECT_NEAR(inside.margin, 0.005, 1e-4) << "the margin is the distance to the edge";
+  EXPECT_NEAR(inside.pose.position.x, kTableHalfX - 0.005, 1e-5) << "the control moved";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_stability_node");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  spinner.stop();
+  ros::shutdown();
+  return result;
+}
