@@ -130,7 +130,8 @@ def targets(rows):
         r = ratio(big["wall_ms_per_sim_s"], small["wall_ms_per_sim_s"])
         lines.append(f"| 2000 settled + 10 moving <= 1.5x the 10 alone (com) | {r:.2f}x | "
                      f"{'yes' if r <= 1.5 else 'no'} |")
-    for case in sorted({r["case"] for r in rows if r["case"].startswith("pile")}):
+    for case in sorted({r["case"] for r in rows
+                        if r["case"].startswith("pile") or r["case"].startswith("freefall")}):
         com, none = by.get((case, "com")), by.get((case, "none_sleep"))
         if com and none:
             r = ratio(com["wall_ms_per_sim_s"], none["wall_ms_per_sim_s"])

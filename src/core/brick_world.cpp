@@ -441,9 +441,20 @@ void BrickWorld::Impl::readContacts() {
 void BrickWorld::Impl::runStabilityModel(bool bullet_stepped) {
   // Nothing moved and nothing is pending: the model would find what it found.
   if (!bullet_stepped && !model->busy()) return;
+  // Only a brick at rest can join the stack: while every mover is faster than
+  // the rest thresholds (a pile in the air), the contacts are not read at all.
+  const StabilityOptions& thresholds = options.stability;
+  const bool any_resting = std::any_of(movers.begin(), movers.end(), [&](const BrickRecord* b) {
+    return b->body->getLinearVelocity().length() < thresholds.rest_linear_speed &&
+           b->body->getAngularVelocity().length() < thresholds.rest_angular_speed;
+  });
   if (bullet_stepped) {
     const Clock::time_point contacts_start = Clock::now();
-    readContacts();
+    if (any_resting) {
+      readContacts();
+    } else {
+      contacts.clear();
+    }
     cost.contact_seconds += secondsSince(contacts_start);
   }
   const Clock::time_point model_start = Clock::now();

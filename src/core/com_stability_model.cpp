@@ -96,7 +96,8 @@ void ComStabilityModel::update(double dt, const std::vector<BodyMotion>& movers,
     mover.rest_time = at_rest ? mover.rest_time + dt : 0.0;
     mover.stability = BrickStability();
     mover.stability.mass_above = body.mass;
-    mover.stability.supports = candidateSupports(body, contacts_for(body.handle));
+    // A moving brick cannot join the stack; its supports are not worth a hull.
+    if (at_rest) mover.stability.supports = candidateSupports(body, contacts_for(body.handle));
     evaluateSupport(body.com, &mover.stability);
     if (mover.rest_time >= options_.rest_time) resting.push_back(&body);
   }

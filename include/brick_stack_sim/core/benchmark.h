@@ -1,7 +1,10 @@
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include "brick_stack_sim/core/brick.h"
 
 #include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/core/status.h"
@@ -33,6 +36,9 @@ struct BenchCase {
   double duration = 10.0;  ///< Sim time per run [s].
   int bricks = 10;         ///< kHarmonic: stack height.
   double offset = 0.011;   ///< kSlantTower: layer shift [m].
+  /// Runs of a short case; the fastest counts, as the least disturbed by the
+  /// rest of a shared machine (kSettled and kDrop).
+  int repeats = 1;
   std::vector<BenchSetting> settings;
 };
 
@@ -70,6 +76,9 @@ BenchPlan fullBenchPlan();
 struct BenchContext {
   BrickTypeLibrary types;
   std::vector<std::string> scene_dirs;
+  /// Reference runs (1/4000 s, 100 iterations) are costly and the same for
+  /// every setting of a case and mode: computed once, by "scene/mode".
+  mutable std::map<std::string, std::vector<BrickSnapshot>> references;
 };
 
 /// Runs one case at one setting.
