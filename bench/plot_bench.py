@@ -52,7 +52,7 @@ def is_default(row):
     return abs(row["time_step"] - DEFAULT[0]) < 1e-9 and int(row["iterations"]) == DEFAULT[1]
 
 
-def plot_pareto(case, rows, out_dir):
+def plot_pareto(case, rows, out_dir, stem):
     column = error_column(rows)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for mode, colour in COLOURS.items():
@@ -75,11 +75,11 @@ def plot_pareto(case, rows, out_dir):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, f"pareto_{case}.png"), dpi=110)
+    fig.savefig(os.path.join(out_dir, f"{stem}_pareto_{case}.png"), dpi=110)
     plt.close(fig)
 
 
-def plot_scaling(rows, out_dir):
+def plot_scaling(rows, out_dir, stem):
     towers = [r for r in rows if r["case"].startswith("tower") and is_default(r)]
     if not towers:
         return
@@ -97,7 +97,7 @@ def plot_scaling(rows, out_dir):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "scaling_settled.png"), dpi=110)
+    fig.savefig(os.path.join(out_dir, f"{stem}_scaling_settled.png"), dpi=110)
     plt.close(fig)
 
 
@@ -160,11 +160,11 @@ def main():
     rows = load(sys.argv[1])
     out_dir = sys.argv[2]
     os.makedirs(out_dir, exist_ok=True)
-    for case in sorted({r["case"] for r in rows}):
-        plot_pareto(case, [r for r in rows if r["case"] == case], out_dir)
-    plot_scaling(rows, out_dir)
-    table = targets(rows)
     stem = os.path.splitext(os.path.basename(sys.argv[1]))[0]
+    for case in sorted({r["case"] for r in rows}):
+        plot_pareto(case, [r for r in rows if r["case"] == case], out_dir, stem)
+    plot_scaling(rows, out_dir, stem)
+    table = targets(rows)
     with open(os.path.join(out_dir, f"{stem}_targets.md"), "w") as f:
         f.write(table)
     print(table)
