@@ -76,13 +76,19 @@ void faceToward(const OrientedBox& box, const Eigen::Vector3d& direction, Eigen:
 }  // namespace
 
 bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
-                       std::vector<Eigen::Vector3d>* patch) {
+                       double max_gap, std::vector<Eigen::Vector3d>* patch) {
   Eigen::Vector3d lower_normal, upper_normal;
   std::array<Eigen::Vector3d, 4> lower_face, upper_face;
   faceToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal, &lower_face);
   faceToward(upper, -Eigen::Vector3d::UnitZ(), &upper_normal, &upper_face);
   if (lower_normal.dot(-upper_normal) < std::cos(max_angle)) return false;
   if (lower_normal.z() <= 0.0) return false;  // a face that looks down carries nothing
+  // The faces must touch: a brick under a lintel or beside a neighbour has
+  // parallel faces that overlap seen from above, on another plane.
+  const Eigen::Vector3d upper_centre =
+      0.25 * (upper_face[0] + upper_face[1] + upper_face[2] + upper_face[3]);
+  if (std::abs(lower_normal.dot(upper_centre - lower_face[0])) > max_gap) return false;
+  if (lower_normal.dot(upper.pose.translation() - lower.pose.translation()) <= 0.0) return false;
   std::vector<Eigen::Vector2d> lower_2d, upper_2d;
   for (const Eigen::Vector3d& c : lower_face) lower_2d.push_back(c.head<2>());
   for (const Eigen::Vector3d& c : upper_face) upper_2d.push_back(c.head<2>());

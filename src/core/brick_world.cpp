@@ -117,6 +117,9 @@ struct BrickWorld::Impl {
   std::vector<BrickRecord*> frozen_in_bullet;
   std::unique_ptr<StabilityModel> model;  // null in mode none
   std::vector<PairContact> contacts;      // of the last Bullet step
+  // The model has something new to look at without a Bullet step: a brick
+  // placed, removed, frozen or woken.
+  bool model_changed = false;
   unsigned next_serial = 0;
   CostCounters cost;
   std::vector<SimEvent> events;
@@ -431,7 +434,8 @@ void BrickWorld::Impl::readContacts() {
       const bool b_below = pair.normal.z() > 0.0;
       std::vector<Eigen::Vector3d> patch;
       if (flushContactPatch(boxOf(b_below ? pair.b : pair.a), boxOf(b_below ? pair.a : pair.b),
-                            options.stability.flush_angle, &patch))
+                            options.stability.flush_angle, options.stability.contact_distance,
+                            &patch))
         pair.points = std::move(patch);
     }
     contacts.push_back(std::move(pair));
@@ -440,7 +444,8 @@ void BrickWorld::Impl::readContacts() {
 
 void BrickWorld::Impl::runStabilityModel(bool bullet_stepped) {
   // Nothing moved and nothing is pending: the model would find what it found.
-  if (!bullet_stepped && !model->busy()) return;
+  if (!bullet_stepped && !model_changed) return;
+  model_changed = false;
   // Only a brick at rest can join the stack: while every mover is faster than
   // the rest thresholds (a pile in the air), the contacts are not read at all.
   const StabilityOptions& thresholds = options.stability;
@@ -464,7 +469,7 @@ void BrickWorld::Impl::runStabilityModel(bool bullet_stepped) {
     const btRigidBody& body = *brick->body;
     motions.push_back(BodyMotion{brick->serial, convertBtToEigen(body.getCenterOfMassPosition()),
                                  brick->type.mass, convertBtToEigen(body.getLinearVelocity()),
-                                 convertBtToEigen(body.getAngularVelocity()), false});
+                                 convertBtToEigen(body.getAngularVelocity())});
   }
   StabilityDecisions decisions;
   model->update(options.time_step, motions, contacts, &decisions);
@@ -523,18 +528,31 @@ std::vector<BrickRecord*> BrickWorld::Impl::frozenNear(const btVector3& low,
 }
 
 void BrickWorld::Impl::updateFrozenColliders() {
-  // Far enough that a mover cannot cross it in one step, plus a millimetre so
-  // that resting contacts stay in Bullet's manifolds.
-  constexpr double kReach = 1e-3;
+  // How far a mover can get within this step. Its own speed is not enough:
+  // gravity adds g dt during the step, and a collision inside the step can
+  // hand it up to twice the speed of the fastest brick that may hit it. CCD
+  // does not help against a body that is not in Bullet's world.
+  double fastest = 0.0;
   for (const BrickRecord* mover : movers) {
     const btRigidBody& body = *mover->body;
+    fastest =
+        std::max(fastest, body.getLinearVelocity().length() + body.getAngularVelocity().length() *
+                                                                  mover->type.halfExtents().norm());
+  }
+  const double dt = options.time_step;
+  // Plus a millimetre, so that resting contacts stay in Bullet's manifolds.
+  constexpr double kReach = 1e-3;
+  const double travel = (2.0 * fastest + options.gravity * dt) * dt + kReach;
+  const btVector3 reach(travel, travel, travel);
+  for (const BrickRecord* mover : movers) {
     btVector3 low, high;
-    body.getAabb(low, high);
-    const double travel =
-        body.getLinearVelocity().length() * options.time_step +
-        body.getAngularVelocity().length() * options.time_step * mover->type.halfExtents().norm();
-    const btVector3 reach(travel + kReach, travel + kReach, travel + kReach);
-    for (BrickRecord* frozen : frozenNear(low - reach, high + reach)) {
+    mover->body->getAabb(low, high);
+    std::vector<BrickRecord*> near = frozenNear(low - reach, high + reach);
+    // Tree order depends on insertion history; Bullet's contact order on the
+    // order bodies are added: placement order keeps that reproducible.
+    std::sort(near.begin(), near.end(),
+              [](const BrickRecord* a, const BrickRecord* b) { return a->serial < b->serial; });
+    for (BrickRecord* frozen : near) {
       frozen->needed_at_step = cost.steps;
       addToBullet(frozen);
     }
@@ -588,7 +606,8 @@ std::vector<PairContact> BrickWorld::Impl::placementSupports(const BrickRecord& 
     PairContact contact;
     contact.a = brick.serial;
     contact.b = lower;
-    if (flushContactPatch(lower_box, box, options.stability.flush_angle, &contact.points))
+    if (flushContactPatch(lower_box, box, options.stability.flush_angle,
+                          options.stability.contact_distance, &contact.points))
       supports.push_back(std::move(contact));
   };
   try_support(kTableHandle);
@@ -621,6 +640,11 @@ std::string BrickWorld::Impl::wakeReason(const WakeDecision& d) const {
 }
 
 void BrickWorld::Impl::apply(const StabilityDecisions& decisions) {
+  if (decisions.empty()) return;
+  // Contacts read before bodies changed hands would name bricks that moved
+  // in or out of Bullet's world; the next Bullet step reads them afresh.
+  contacts.clear();
+  model_changed = true;
   for (const FreezeDecision& d : decisions.freeze) {
     auto it = by_handle.find(d.brick);
     if (it == by_handle.end()) continue;
@@ -739,12 +763,13 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
   if (assigned_id) *assigned_id = brick->id;
   BrickRecord* record = brick.get();
   w.bricks.push_back(std::move(brick));
+  w.model_changed = true;
   w.movers.push_back(record);  // the newest serial: the end keeps the order
   if (w.model && placement.linear_velocity.isZero() && placement.angular_velocity.isZero()) {
     StabilityDecisions decisions;
     w.model->placedAtRest(
         BodyMotion{record->serial, placement.pose.translation(), record->type.mass,
-                   Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), false},
+                   Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
         w.placementSupports(*record), &decisions);
     w.apply(decisions);
   }
@@ -763,11 +788,14 @@ Status BrickWorld::removeBrick(const std::string& id) {
     w.apply(decisions);
     for (const WakeDecision& d : decisions.wake) woken.push_back(w.nameOf(d.brick));
   }
-  for (std::string& id : w.wakeTouching(*brick))
-    if (std::find(woken.begin(), woken.end(), id) == woken.end()) woken.push_back(std::move(id));
+  for (std::string& touching : w.wakeTouching(*brick))
+    if (std::find(woken.begin(), woken.end(), touching) == woken.end())
+      woken.push_back(std::move(touching));
   w.removeFromBullet(brick);
   w.forgetFrozen(brick);
   w.removeMover(brick);
+  w.contacts.clear();
+  w.model_changed = true;
   w.by_id.erase(found);
   w.by_handle.erase(brick->serial);
   w.bricks.erase(std::find_if(w.bricks.begin(), w.bricks.end(),
@@ -784,11 +812,27 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   if (!impulse.allFinite()) return Status::error("impulse is not finite");
   if (!point.allFinite()) return Status::error("point of application is not finite");
   btRigidBody& body = *found->second->body;
-  const double speed_change = impulse.norm() / found->second->type.mass;
-  if (speed_change > w.options.max_linear_speed)
-    return Status::error("impulse would change the brick's speed by " +
-                         std::to_string(speed_change) + " m/s, over the limit of " +
-                         std::to_string(w.options.max_linear_speed));
+  const BrickType& type = found->second->type;
+  // The speeds the push leaves the brick with, before Bullet sees it: a push
+  // that would launch it past the placement limits is refused, not repaired.
+  const Eigen::Vector3d lever = point - convertBtToEigen(body.getCenterOfMassPosition());
+  const Eigen::Matrix3d rotation = convertBtToEigen(body.getWorldTransform()).linear();
+  const Eigen::Matrix3d inverse_inertia =
+      rotation * type.inertia.cwiseInverse().asDiagonal() * rotation.transpose();
+  const bool frozen = found->second->frozen;
+  const Eigen::Vector3d velocity =
+      (frozen ? Eigen::Vector3d::Zero() : convertBtToEigen(body.getLinearVelocity())) +
+      impulse / type.mass;
+  const Eigen::Vector3d spin =
+      (frozen ? Eigen::Vector3d::Zero() : convertBtToEigen(body.getAngularVelocity())) +
+      inverse_inertia * lever.cross(impulse);
+  if (velocity.norm() > w.options.max_linear_speed)
+    return Status::error("impulse would leave the brick at " + std::to_string(velocity.norm()) +
+                         " m/s, over the limit of " + std::to_string(w.options.max_linear_speed));
+  if (spin.norm() > w.options.max_angular_speed)
+    return Status::error("impulse would leave the brick spinning at " +
+                         std::to_string(spin.norm()) + " rad/s, over the limit of " +
+                         std::to_string(w.options.max_angular_speed));
   if (found->second->frozen) {
     StabilityDecisions decisions;
     w.model->wake(found->second->serial, WakeCause::kPushed, &decisions);

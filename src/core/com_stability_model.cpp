@@ -46,8 +46,6 @@ void ComStabilityModel::clear() {
   dirty_.clear();
 }
 
-bool ComStabilityModel::busy() const { return !movers_.empty() || !dirty_.empty(); }
-
 std::vector<SupportPatch> ComStabilityModel::candidateSupports(
     const BodyMotion& body, const std::vector<const PairContact*>& contacts) const {
   const double vertical = std::cos(options_.support_normal_tolerance);
@@ -171,7 +169,11 @@ void ComStabilityModel::wakeWithLoad(BodyHandle brick, const WakeDecision& first
       dirty_.insert(patch.supporter);  // its load changed
     }
     dirty_.erase(decision.brick);
-    movers_[decision.brick] = Mover();
+    // Until its next step it carries only itself, where it was frozen.
+    Mover& mover = movers_[decision.brick];
+    mover = Mover();
+    mover.stability.com_above = node.com;
+    mover.stability.mass_above = node.mass;
     decisions->wake.push_back(decision);
     for (BodyHandle upper : node.carries)
       queue.push_back(WakeDecision{upper, WakeCause::kCarried, decision.brick, 0.0});
@@ -235,7 +237,6 @@ void ComStabilityModel::runPasses(StabilityDecisions* decisions) {
     std::vector<WakeDecision> unstable;
     for (const auto& component : components) {
       if (component.empty()) continue;
-      ++passes_;
       auto found = passComponent(component);
       unstable.insert(unstable.end(), found.begin(), found.end());
     }

@@ -153,6 +153,14 @@ ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
   return brick;
 }
 
+/// The fields every generator that places bricks one by one shares.
+template <typename Params>
+void readTypeAndTiming(const YAML::Node& node, const std::string& where, Params* params) {
+  params->type = readString(node, "type", where);
+  params->start = readNumber(node, "start", where, params->start);
+  params->interval = readNumber(node, "interval", where, params->interval);
+}
+
 void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
                   std::vector<ScheduledBrick>* bricks) {
   const std::string where = "generator";
@@ -173,9 +181,7 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
     params.spacing = readNumber(node, "spacing", where, params.spacing);
     params.layers = readInt(node, "layers", where, params.layers);
     params.bricks_per_layer = readInt(node, "bricks_per_layer", where, params.bricks_per_layer);
-    params.type = readString(node, "type", where);
-    params.start = readNumber(node, "start", where, params.start);
-    params.interval = readNumber(node, "interval", where, params.interval);
+    readTypeAndTiming(node, where, &params);
     params.gap = readNumber(node, "gap", where, params.gap);
     if (Status generated = generateTower(params, types, bricks); !generated)
       fail(where, generated.message);
@@ -186,9 +192,7 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
     HarmonicParams params;
     params.bricks = readInt(node, "bricks", where, params.bricks);
     params.factor = readNumber(node, "factor", where, params.factor);
-    params.type = readString(node, "type", where);
-    params.start = readNumber(node, "start", where, params.start);
-    params.interval = readNumber(node, "interval", where, params.interval);
+    readTypeAndTiming(node, where, &params);
     if (Status generated = generateHarmonic(params, table, types, bricks); !generated)
       fail(where, generated.message);
     return;
@@ -198,9 +202,7 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
     SlantTowerParams params;
     params.layers = readInt(node, "layers", where, params.layers);
     params.offset = readNumber(node, "offset", where, params.offset);
-    params.type = readString(node, "type", where);
-    params.start = readNumber(node, "start", where, params.start);
-    params.interval = readNumber(node, "interval", where, params.interval);
+    readTypeAndTiming(node, where, &params);
     if (Status generated = generateSlantTower(params, types, bricks); !generated)
       fail(where, generated.message);
     return;
@@ -210,9 +212,7 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
     PyramidParams params;
     params.base = readInt(node, "base", where, params.base);
     params.gap = readNumber(node, "gap", where, params.gap);
-    params.type = readString(node, "type", where);
-    params.start = readNumber(node, "start", where, params.start);
-    params.interval = readNumber(node, "interval", where, params.interval);
+    readTypeAndTiming(node, where, &params);
     if (Status generated = generatePyramid(params, types, bricks); !generated)
       fail(where, generated.message);
     return;

@@ -20,8 +20,9 @@ bool nonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
 
 Status validate(const WorldOptions& o) {
   if (Status available = checkStabilityModeAvailable(o.mode); !available) return available;
-  // Below 10 us a step resolves nothing Bullet needs; above 0.1 s a brick falls
-  // further than its own thickness in one step and tunnels through the table.
+  // Below 10 us a step resolves nothing Bullet needs; at 0.1 s a brick that
+  // has fallen a few centimetres crosses several of its own thicknesses in one
+  // step, which no contact can catch.
   if (!positive(o.time_step) || o.time_step < 1e-5 || o.time_step > 0.1)
     return bad("time_step", o.time_step, "must be in [1e-5, 0.1] s");
   if (o.solver_iterations < 1 || o.solver_iterations > 10000)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/box_geometry.h"
+#include "brick_stack_sim/core/polygon2d.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -74,6 +75,55 @@ TEST(BoxGeometry, RotationCheck) {
   Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
   nan(1, 1) = std::nan("");
   EXPECT_FALSE(isRotation(nan));
+}
+
+}  // namespace
+}  // namespace brick_stack_sim
+
+namespace brick_stack_sim {
+namespace {
+
+constexpr double kHalfLength = 0.0585, kHalfWidth = 0.0117, kHalfThickness = 0.0039;
+
+OrientedBox plank(const Eigen::Vector3d& centre, double yaw = 0.0) {
+  OrientedBox b;
+  b.pose.translation() = centre;
+  b.pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  b.half_extents = Eigen::Vector3d(kHalfLength, kHalfWidth, kHalfThickness);
+  return b;
+}
+
+double patchArea(const std::vector<Eigen::Vector3d>& patch) {
+  std::vector<Eigen::Vector2d> flat;
+  for (const Eigen::Vector3d& p : patch) flat.push_back(p.head<2>());
+  return area(convexHull(flat));
+}
+
+TEST(FlushContactPatch, CrossedPlanksRestOnTheirSquareOverlap) {
+  std::vector<Eigen::Vector3d> patch;
+  const OrientedBox lower = plank({0, 0, kHalfThickness});
+  const OrientedBox upper = plank({0, 0, 3 * kHalfThickness}, M_PI / 2);
+  ASSERT_TRUE(flushContactPatch(lower, upper, 0.002, 1e-4, &patch));
+  EXPECT_NEAR(patchArea(patch), 4 * kHalfWidth * kHalfWidth, 1e-12);
+  for (const Eigen::Vector3d& corner : patch) EXPECT_NEAR(corner.z(), 2 * kHalfThickness, 1e-12);
+}
+
+TEST(FlushContactPatch, TiltedGappedOrMisplacedFacesAreNoPatch) {
+  std::vector<Eigen::Vector3d> patch;
+  const OrientedBox lower = plank({0, 0, kHalfThickness});
+  // Tilted by 10 mrad about x: not flush within 2 mrad.
+  OrientedBox tilted = plank({0, 0, 3 * kHalfThickness}, M_PI / 2);
+  tilted.pose.linear() = Eigen::AngleAxisd(0.01, Eigen::Vector3d::UnitX()) * tilted.pose.linear();
+  EXPECT_FALSE(flushContactPatch(lower, tilted, 0.002, 1e-4, &patch));
+  // Hovering 1 mm above: parallel, overlapping from above, but not touching.
+  EXPECT_FALSE(
+      flushContactPatch(lower, plank({0, 0, 3 * kHalfThickness + 1e-3}), 0.002, 1e-4, &patch));
+  // Under a lintel: the "upper" box is the lower one; it carries nothing.
+  EXPECT_FALSE(flushContactPatch(plank({0, 0, 3 * kHalfThickness}), lower, 0.002, 1e-4, &patch));
+  // Beside a neighbour of the same height, sunk into it by 0.05 mm sideways:
+  // the faces overlap seen from above, but 7.8 mm apart in height.
+  EXPECT_FALSE(flushContactPatch(lower, plank({0, 2 * kHalfWidth - 5e-5, kHalfThickness}), 0.002,
+                                 1e-4, &patch));
 }
 
 }  // namespace

@@ -12,11 +12,7 @@ using test::fingerprint;
 using test::kKaplaThickness;
 using test::makeWorld;
 using test::placement;
-
-void runFor(BrickWorld* world, double seconds) {
-  const auto steps = static_cast<int>(std::lround(seconds / world->options().time_step));
-  for (int i = 0; i < steps; ++i) world->step();
-}
+using test::runFor;
 
 TEST(BrickWorld, DroppedBrickComesToRestFlatOnTheTable) {
   auto world = makeWorld();

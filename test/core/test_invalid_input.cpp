@@ -16,10 +16,14 @@ using test::placement;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-class InvalidInput : public ::testing::Test {
+/// In both modes: with the stability layer the base brick is frozen, so the
+/// refusals also cover the frozen bricks' side of every check.
+class InvalidInput : public ::testing::TestWithParam<StabilityMode> {
  protected:
   void SetUp() override {
-    world_ = test::makeWorld();
+    WorldOptions options;
+    options.mode = GetParam();
+    world_ = test::makeWorld(options);
     ASSERT_TRUE(world_->addBrick(placement("base", {0, 0, 0.0039})).ok);
     for (int i = 0; i < 20; ++i) world_->step();
     world_->takeEvents();
@@ -40,7 +44,7 @@ class InvalidInput : public ::testing::Test {
   std::string before_;
 };
 
-TEST_F(InvalidInput, NonFinitePositionInEachAxis) {
+TEST_P(InvalidInput, NonFinitePositionInEachAxis) {
   for (int axis = 0; axis < 3; ++axis) {
     for (double bad : {kNaN, kInf, -kInf}) {
       Eigen::Vector3d position(0, 0.1, 0.0039);
@@ -50,7 +54,7 @@ TEST_F(InvalidInput, NonFinitePositionInEachAxis) {
   }
 }
 
-TEST_F(InvalidInput, NonFiniteOrNonRotationOrientation) {
+TEST_P(InvalidInput, NonFiniteOrNonRotationOrientation) {
   BrickPlacement p = placement("new", {0, 0.1, 0.0039});
   p.pose.linear()(0, 1) = kNaN;
   expectRefused(world_->addBrick(p), "orientation");
@@ -62,7 +66,7 @@ TEST_F(InvalidInput, NonFiniteOrNonRotationOrientation) {
   expectRefused(world_->addBrick(p), "orientation");
 }
 
-TEST_F(InvalidInput, NonFiniteOrExcessiveVelocity) {
+TEST_P(InvalidInput, NonFiniteOrExcessiveVelocity) {
   for (int axis = 0; axis < 3; ++axis) {
     BrickPlacement p = placement("new", {0, 0.1, 0.0039});
     p.linear_velocity[axis] = kNaN;
@@ -76,7 +80,7 @@ TEST_F(InvalidInput, NonFiniteOrExcessiveVelocity) {
   expectRefused(world_->addBrick(p), "linear speed");
 }
 
-TEST_F(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
+TEST_P(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
   expectRefused(world_->addBrick(placement("new", {0, 0.1, 0.0039}, 0.0, "granite")),
                 "unknown brick type 'granite'");
   expectRefused(world_->addBrick(placement("base", {0, 0.1, 0.0039})), "already in use");
@@ -87,7 +91,7 @@ TEST_F(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
   expectRefused(world_->removeBrick(""), "no brick with id");
 }
 
-TEST_F(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
+TEST_P(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
   expectRefused(world_->addBrick(placement("new", {0.01, 0, 0.006})), "overlaps brick 'base'");
   expectRefused(world_->addBrick(placement("new", {0, 0, 0.0039}, M_PI / 2)),
                 "overlaps brick 'base'");
@@ -99,19 +103,27 @@ TEST_F(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
   expectRefused(world_->addBrick(upright), "below the table top");
 }
 
-TEST_F(InvalidInput, TouchingIsNotOverlapping) {
+TEST_P(InvalidInput, TouchingIsNotOverlapping) {
   // Exactly on top of the base brick, and exactly beside it: both accepted.
   EXPECT_TRUE(world_->checkPlacement(placement("up", {0, 0, 0.0039 + 0.0078})).ok);
   EXPECT_TRUE(world_->checkPlacement(placement("side", {0, 0.0234, 0.0039})).ok);
   EXPECT_TRUE(fingerprint(*world_) == before_);  // checking changes nothing either
 }
 
-TEST_F(InvalidInput, NonFiniteImpulse) {
+TEST_P(InvalidInput, NonFiniteImpulse) {
   expectRefused(world_->applyImpulse("base", {kNaN, 0, 0}, {0, 0, 0}), "impulse is not finite");
   expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {0, kInf, 0}), "point");
   expectRefused(world_->applyImpulse("ghost", {0, 0, 0.001}, {0, 0, 0}), "no brick");
-  expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0}), "speed");
+  expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0.0039}), "m/s, over the limit");
+  // 0.02 N s a metre off the centre about z: 0.02 / I_zz = 1400 rad/s.
+  expectRefused(world_->applyImpulse("base", {0, 0.02, 0}, {1.0, 0, 0.0039}), "spinning");
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, InvalidInput,
+                         ::testing::Values(StabilityMode::kNone, StabilityMode::kCom),
+                         [](const ::testing::TestParamInfo<StabilityMode>& info) {
+                           return std::string(toString(info.param));
+                         });
 
 TEST(InvalidOptions, EveryBadSettingIsNamed) {
   struct Case {

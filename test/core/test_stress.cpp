@@ -13,11 +13,7 @@ namespace {
 
 using test::kKaplaThickness;
 using test::placement;
-
-void runFor(BrickWorld* world, double seconds) {
-  const auto steps = static_cast<long>(std::lround(seconds / world->options().time_step));
-  for (long i = 0; i < steps; ++i) world->step();
-}
+using test::runFor;
 
 void expectFiniteAndComplete(const BrickWorld& world, std::size_t bricks) {
   const std::vector<BrickSnapshot> all = world.snapshot();
@@ -98,10 +94,6 @@ TEST_P(StressByMode, TimeStepsUpToBlowUpNeverLeakNaN) {
     ASSERT_TRUE(runScene(scene, test::packageTypes(), run, &report).ok);
     EXPECT_EQ(report.bricks.size(), 20u) << time_step;
     EXPECT_EQ(report.cost.nonfinite, 0u) << time_step;
-    std::size_t reported = 0;
-    for (const SimEvent& e : report.events) reported += e.kind == SimEventKind::kNonFinite;
-    // Every repaired blow-up is on the event stream.
-    EXPECT_EQ(reported, report.cost.blowups + report.cost.nonfinite) << time_step;
     for (const BrickOutcome& b : report.bricks)
       EXPECT_TRUE(b.brick.pose.matrix().allFinite()) << time_step << " " << b.brick.id;
     EXPECT_EQ(toJson(report).find("null"), std::string::npos) << time_step;

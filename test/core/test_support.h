@@ -2,6 +2,7 @@
 // Shared fixtures of the core tests: the package's own brick types and a
 // fingerprint of a world's state to prove that a refused request changed nothing.
 
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -41,12 +42,18 @@ inline std::string fingerprint(const BrickWorld& world) {
   const double time = world.time();
   append(&time, sizeof time);
   for (const BrickSnapshot& b : world.snapshot()) {
-    bytes += b.id + '\0' + b.type + '\0';
+    bytes += b.id + '\0' + b.type + '\0' + static_cast<char>(b.state);
     append(b.pose.matrix().data(), sizeof(double) * 16);
     append(b.linear_velocity.data(), sizeof(double) * 3);
     append(b.angular_velocity.data(), sizeof(double) * 3);
   }
   return bytes;
+}
+
+/// Steps the world for `seconds` of sim time.
+inline void runFor(BrickWorld* world, double seconds) {
+  const auto steps = static_cast<long>(std::lround(seconds / world->options().time_step));
+  for (long i = 0; i < steps; ++i) world->step();
 }
 
 inline BrickPlacement placement(const std::string& id, const Eigen::Vector3d& position,

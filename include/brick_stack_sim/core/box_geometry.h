@@ -23,13 +23,15 @@ std::array<Eigen::Vector3d, 8> corners(const OrientedBox& box);
 double separation(const OrientedBox& a, const OrientedBox& b);
 
 /// The contact patch of `upper` resting flat on `lower`: when the downward
-/// face of `upper` and the upward face of `lower` are parallel within
-/// `max_angle` [rad], the overlap of the two faces seen from above, lifted onto
-/// the lower face. Bullet's box-box clipper keeps only penetrating points, so a
-/// brick tilted by a micro-radian reports half its patch; resting flush, the
-/// whole overlap carries. False when the faces are not flush or do not overlap.
+/// face of `upper` lies on the upward face of `lower` (parallel within
+/// `max_angle` [rad], its centre within `max_gap` [m] of that face's plane)
+/// and `upper` is the higher box, the overlap of the two faces seen from
+/// above, lifted onto the lower face. Bullet's box-box clipper keeps only
+/// penetrating points, so a brick tilted by a micro-radian reports half its
+/// patch; resting flush, the whole overlap carries. False when the faces are
+/// not flush, not in contact, or do not overlap.
 bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
-                       std::vector<Eigen::Vector3d>* patch);
+                       double max_gap, std::vector<Eigen::Vector3d>* patch);
 
 /// Whether `rotation` is a proper rotation (orthonormal, determinant +1) within `tolerance`.
 bool isRotation(const Eigen::Matrix3d& rotation, double tolerance = 1e-6);

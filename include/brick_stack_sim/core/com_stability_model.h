@@ -30,11 +30,7 @@ class ComStabilityModel : public StabilityModel {
   void remove(BodyHandle brick, StabilityDecisions* decisions) override;
   void wake(BodyHandle brick, WakeCause cause, StabilityDecisions* decisions) override;
   void clear() override;
-  bool busy() const override;
   bool describe(BodyHandle brick, BrickStability* stability) const override;
-
-  /// Stability passes run so far (one per changed component), for benchmarks.
-  std::size_t passes() const { return passes_; }
 
  private:
   /// A frozen brick: where it rests and, after a pass, what it carries.
@@ -68,7 +64,6 @@ class ComStabilityModel : public StabilityModel {
   std::map<BodyHandle, Node> frozen_;
   std::map<BodyHandle, Mover> movers_;
   std::set<BodyHandle> dirty_;
-  std::size_t passes_ = 0;
 };
 
 /// Fills the hull, height and combined figures of `stability` from its supports

@@ -15,7 +15,7 @@ struct LoadShare {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
 };
 
-/// How the load was split, for events and tests.
+/// How the load was split (tests check that each rule is reached).
 enum class LoadSplitRule {
   kSingleSupporter,  ///< One patch: all of it at the load's projection.
   kLeverRule,        ///< Two patches: lever rule between the patch centres.

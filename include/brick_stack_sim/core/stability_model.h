@@ -24,7 +24,6 @@ struct BodyMotion {
   double mass = 0.0;                                           ///< [kg]
   Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
-  bool frozen = false;
 };
 
 /// The touching points of one pair of bodies in one step.
@@ -103,8 +102,6 @@ class StabilityModel {
   /// An outside push: the brick and what it carries must wake.
   virtual void wake(BodyHandle brick, WakeCause cause, StabilityDecisions* decisions) = 0;
   virtual void clear() = 0;
-  /// False when the model has nothing to do until a brick moves or changes.
-  virtual bool busy() const = 0;
   /// What the model knows of `brick`; false when it knows nothing.
   virtual bool describe(BodyHandle brick, BrickStability* stability) const = 0;
 };

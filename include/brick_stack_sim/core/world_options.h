@@ -37,8 +37,10 @@ struct StabilityOptions {
   /// Contact points farther apart than this do not touch [m].
   double contact_distance = 1e-4;
   /// Stable means: the COM-above projection lies deeper inside the support
-  /// hull than this [m]. 0: strictly inside.
-  double min_margin = 0.0;
+  /// hull than this [m]. A micrometre: statics says strictly inside, and hulls
+  /// of contact points along one edge, spread by rounding, are slivers a
+  /// fraction of a micrometre wide that must not count as support.
+  double min_margin = 1e-6;
 };
 
 /// Everything that shapes the simulation of a world. The defaults are chosen
