@@ -293,6 +293,12 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
 
   if (params.grid_x < 1 || params.grid_y < 1 || params.grid_x * params.grid_y > 10000)
     return Status::error("tower grid must have 1 to 10000 copies");
+  // The same bound as a pile: more bricks than any table holds is a typo.
+  const long total =
+      static_cast<long>(params.layers) * params.bricks_per_layer * params.grid_x * params.grid_y;
+  if (total > 100000)
+    return Status::error("tower of " + std::to_string(total) +
+                         " bricks: at most 100000 (layers x bricks_per_layer x grid)");
   if (!params.origin.allFinite() || !std::isfinite(params.spacing) || params.spacing < 0.0)
     return Status::error("tower origin and spacing must be finite, spacing >= 0 m");
 

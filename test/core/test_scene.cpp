@@ -124,6 +124,12 @@ TEST(Scene, TowerRefusesBadParameters) {
   params.layers = 2;
   params.type = "marble";
   EXPECT_FALSE(generateTower(params, test::packageTypes(), &bricks).ok);
+  params.type = "";
+  params.layers = 5000;  // 5000 x 3 x 100 towers: 1.5 million bricks
+  params.grid_x = params.grid_y = 10;
+  const Status huge = generateTower(params, test::packageTypes(), &bricks);
+  EXPECT_FALSE(huge.ok);
+  EXPECT_NE(huge.message.find("100000"), std::string::npos) << huge.message;
   EXPECT_TRUE(bricks.empty());
 }
 
