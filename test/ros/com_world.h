@@ -1,7 +1,8 @@
 #pragma once
 // A real BrickWorld in mode com with the package's brick types, for the
 // adapter's unit tests: what they convert and draw comes from the stability
-// layer itself, not from hand-made snapshots that could drift from it.
+// layer itself, not from hand-made snapshots that could drift from it. The
+// tower geometry here is also what the node tests place through ~place_brick.
 
 #include <cmath>
 #include <memory>
@@ -36,19 +37,30 @@ inline std::unique_ptr<BrickWorld> makeComWorld() {
   return world;
 }
 
-/// Brick `index` of a two-per-layer tower: layer index / 2, even layers along
-/// x at y = -/+ kTowerOffset, odd layers turned by pi/2 at x = -/+ kTowerOffset.
-inline BrickPlacement towerBrick(int index) {
-  const int layer = index / 2;
-  const double across = index % 2 == 0 ? -kTowerOffset : kTowerOffset;
+/// Centre and yaw of a brick of a two-per-layer tower.
+struct TowerSlot {
+  double x, y, z;  ///< [m]
+  double yaw;      ///< About z [rad].
+};
+
+/// Brick `slot` (0 or 1) of `layer` of a two-per-layer tower, as the core's
+/// tower generator lays it: even layers along x at y = -/+ kTowerOffset, odd
+/// layers turned by pi/2 at x = -/+ kTowerOffset.
+inline TowerSlot towerSlot(int layer, int slot) {
+  const double across = slot == 0 ? -kTowerOffset : kTowerOffset;
   const bool along_x = layer % 2 == 0;
+  return {along_x ? 0.0 : across, along_x ? across : 0.0,
+          kKaplaThickness / 2 + layer * kKaplaThickness, along_x ? 0.0 : M_PI / 2};
+}
+
+/// Brick `index` of a two-per-layer tower: towerSlot(index / 2, index % 2).
+inline BrickPlacement towerBrick(int index) {
+  const TowerSlot slot = towerSlot(index / 2, index % 2);
   BrickPlacement p;
   p.id = "t" + std::to_string(index);
   p.type = "kapla";
-  p.pose.translation() = Eigen::Vector3d(along_x ? 0.0 : across, along_x ? across : 0.0,
-                                         kKaplaThickness / 2 + layer * kKaplaThickness);
-  p.pose.linear() =
-      Eigen::AngleAxisd(along_x ? 0.0 : M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  p.pose.translation() = Eigen::Vector3d(slot.x, slot.y, slot.z);
+  p.pose.linear() = Eigen::AngleAxisd(slot.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   return p;
 }
 

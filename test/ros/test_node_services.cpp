@@ -2,7 +2,6 @@
 // should work do, bad ones are refused with a message and change nothing.
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
@@ -11,18 +10,17 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
-#include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "brick_stack_sim/BrickArray.h"
-#include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StabilityEvent.h"
 #include "brick_stack_sim/StepSimulation.h"
+#include "node_fixture.h"
 
 namespace {
 
@@ -31,28 +29,11 @@ using namespace brick_stack_sim;
 constexpr double kHalfHeight = 0.0039;  ///< Half a KAPLA thickness [m]: a brick lying on the table.
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (ros::WallTime::now() < end) {
-    if (done()) return true;
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
-
-class NodeServices : public ::testing::Test {
+class NodeServices : public ros_adapter::test::NodeFixture {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
-        << "the node did not come up";
-    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick");
-    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick");
-    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset");
-    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks");
-    push_ = nh_.serviceClient<PushBrick>("/brick_sim/push_brick");
-    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
-    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+    NodeFixture::SetUp();
+    if (HasFatalFailure()) return;
     // Every test starts from a running node and an empty table.
     ASSERT_TRUE(setPaused(false));
     ResetScene reset;
@@ -61,48 +42,10 @@ class NodeServices : public ::testing::Test {
     ASSERT_TRUE(bricks().empty());
   }
 
-  PlaceBrick::Response place(const std::string& id, double x, double y, double z, double yaw = 0.0,
-                             const std::string& type = "kapla") {
-    PlaceBrick srv;
-    srv.request.id = id;
-    srv.request.type = type;
-    srv.request.pose.position.x = x;
-    srv.request.pose.position.y = y;
-    srv.request.pose.position.z = z;
-    srv.request.pose.orientation.z = std::sin(yaw / 2);
-    srv.request.pose.orientation.w = std::cos(yaw / 2);
-    return call(place_, srv);
-  }
-
-  template <typename Service>
-  typename Service::Response call(ros::ServiceClient& client, Service& srv) {
-    EXPECT_TRUE(client.call(srv)) << "call to " << client.getService() << " failed";
-    return srv.response;
-  }
-
-  std::vector<Brick> bricks() {
-    GetBricks srv;
-    EXPECT_TRUE(get_.call(srv));
-    EXPECT_TRUE(srv.response.success) << srv.response.message;
-    return srv.response.bricks;
-  }
-
   std::optional<Brick> brick(const std::string& id) {
     for (const Brick& b : bricks())
       if (b.id == id) return b;
     return std::nullopt;
-  }
-
-  bool setPaused(bool paused) {
-    std_srvs::SetBool srv;
-    srv.request.data = paused;
-    return pause_.call(srv) && srv.response.success;
-  }
-
-  StepSimulation::Response step(unsigned steps) {
-    StepSimulation srv;
-    srv.request.steps = steps;
-    return call(step_, srv);
   }
 
   /// Expects a refusal that says something, for the request named `what`.
@@ -111,9 +54,6 @@ class NodeServices : public ::testing::Test {
     EXPECT_FALSE(response.success) << what << " was accepted";
     EXPECT_FALSE(response.message.empty()) << what << " refused without a message";
   }
-
-  ros::NodeHandle nh_;
-  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_;
 };
 
 TEST_F(NodeServices, PlaceGetRemove) {

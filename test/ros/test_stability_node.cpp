@@ -5,7 +5,6 @@
 // Each test pauses the node and advances it with ~step, so sim time is exact.
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -15,54 +14,34 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
-#include <std_srvs/SetBool.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/GetBricks.h"
-#include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/core/world_options.h"
+#include "com_world.h"
+#include "node_fixture.h"
 
 namespace {
 
 using namespace brick_stack_sim;
+using ros_adapter::test::kKaplaThickness;
 using visualization_msgs::Marker;
 using visualization_msgs::MarkerArray;
 
-// KAPLA and the core's tower generator (DESIGN.md section 5).
-constexpr double kThickness = 0.0078;  ///< [m]
-constexpr double kOffset = 0.0468;   ///< Half of (length - width): bricks rest across the ends [m].
 constexpr double kTableHalfX = 0.6;  ///< The default 1.2 x 0.8 m table, centred [m].
-
-/// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (ros::WallTime::now() < end) {
-    if (done()) return true;
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
 
 std::vector<std::string> sorted(std::vector<std::string> ids) {
   std::sort(ids.begin(), ids.end());
   return ids;
 }
 
-class StabilityNode : public ::testing::Test {
+class StabilityNode : public ros_adapter::test::NodeFixture {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
-        << "the node did not come up";
-    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick");
-    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick");
-    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset");
-    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks");
-    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
-    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+    NodeFixture::SetUp();
+    if (HasFatalFailure()) return;
     events_sub_ = nh_.subscribe<StabilityEvent>("/brick_sim/events", 1000,
                                                 [this](const StabilityEvent::ConstPtr& msg) {
                                                   std::lock_guard<std::mutex> lock(mutex_);
@@ -70,50 +49,36 @@ class StabilityNode : public ::testing::Test {
                                                 });
     ASSERT_TRUE(waitFor([&] { return events_sub_.getNumPublishers() > 0; }, 10.0));
     // Every test starts from a paused node and an empty table.
-    std_srvs::SetBool pause;
-    pause.request.data = true;
-    ASSERT_TRUE(pause_.call(pause) && pause.response.success);
+    ASSERT_TRUE(setPaused(true));
     ResetScene reset;
     ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
     ros::WallDuration(0.2).sleep();  // the reset's removed events
     clearEvents();
   }
 
+  // place, step and bricks hide the base's: here a refused placement or step
+  // is a failure, and bricks come by id.
+
   bool place(const std::string& id, double x, double y, double z, double yaw) {
-    PlaceBrick srv;
-    srv.request.id = id;
-    srv.request.type = "kapla";
-    srv.request.pose.position.x = x;
-    srv.request.pose.position.y = y;
-    srv.request.pose.position.z = z;
-    srv.request.pose.orientation.z = std::sin(yaw / 2);
-    srv.request.pose.orientation.w = std::cos(yaw / 2);
-    EXPECT_TRUE(place_.call(srv));
-    EXPECT_TRUE(srv.response.success) << id << ": " << srv.response.message;
-    return srv.response.success;
+    const PlaceBrick::Response placed = NodeFixture::place(id, x, y, z, yaw);
+    EXPECT_TRUE(placed.success) << id << ": " << placed.message;
+    return placed.success;
   }
 
   /// Brick `slot` (0 or 1) of `layer` of the core's tower generator.
   bool placeTowerBrick(const std::string& id, int layer, int slot) {
-    const double across = slot == 0 ? -kOffset : kOffset;
-    const bool along_x = layer % 2 == 0;
-    return place(id, along_x ? 0.0 : across, along_x ? across : 0.0,
-                 kThickness / 2 + layer * kThickness, along_x ? 0.0 : M_PI / 2);
+    const ros_adapter::test::TowerSlot s = ros_adapter::test::towerSlot(layer, slot);
+    return place(id, s.x, s.y, s.z, s.yaw);
   }
 
   void step(unsigned steps) {
-    StepSimulation srv;
-    srv.request.steps = steps;
-    ASSERT_TRUE(step_.call(srv));
-    ASSERT_TRUE(srv.response.success) << srv.response.message;
+    const StepSimulation::Response stepped = NodeFixture::step(steps);
+    ASSERT_TRUE(stepped.success) << stepped.message;
   }
 
   std::map<std::string, Brick> bricks() {
-    GetBricks srv;
-    EXPECT_TRUE(get_.call(srv));
-    EXPECT_TRUE(srv.response.success) << srv.response.message;
     std::map<std::string, Brick> by_id;
-    for (const Brick& b : srv.response.bricks) by_id[b.id] = b;
+    for (const Brick& b : NodeFixture::bricks()) by_id[b.id] = b;
     return by_id;
   }
 
@@ -137,8 +102,6 @@ class StabilityNode : public ::testing::Test {
     events_.clear();
   }
 
-  ros::NodeHandle nh_;
-  ros::ServiceClient place_, remove_, reset_, get_, pause_, step_;
   ros::Subscriber events_sub_;
   std::mutex mutex_;
   std::vector<StabilityEvent> events_;
@@ -259,8 +222,8 @@ TEST_F(StabilityNode, MarkersShowBricksComRaysAndContactMeshes) {
 TEST_F(StabilityNode, BrickPastTheTableEdgeIsNeverStableThereAndFallsOff) {
   // Along x with its centre 5 mm past the +x edge: statics says it tips off.
   // The control, 5 mm inside the edge, must stay: the test tells them apart.
-  ASSERT_TRUE(place("over", kTableHalfX + 0.005, 0.0, kThickness / 2, 0.0));
-  ASSERT_TRUE(place("inside", kTableHalfX - 0.005, 0.3, kThickness / 2, 0.0));
+  ASSERT_TRUE(place("over", kTableHalfX + 0.005, 0.0, kKaplaThickness / 2, 0.0));
+  ASSERT_TRUE(place("inside", kTableHalfX - 0.005, 0.3, kKaplaThickness / 2, 0.0));
   auto stableOnTable = [](const Brick& b) {
     const auto& s = b.supported_by;
     return b.state == Brick::STABLE && std::find(s.begin(), s.end(), "table") != s.end();

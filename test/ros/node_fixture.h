@@ -1,0 +1,97 @@
+#pragma once
+// The base fixture of the rostests that drive a running node through its
+// services: it waits for the node, holds one client per service and wraps the
+// calls the tests share. Each test file derives its own fixture, which brings
+// the node to its starting state in SetUp.
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+
+#include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/PushBrick.h"
+#include "brick_stack_sim/RemoveBrick.h"
+#include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/StepSimulation.h"
+
+namespace brick_stack_sim {
+namespace ros_adapter {
+namespace test {
+
+class NodeFixture : public ::testing::Test {
+ protected:
+  /// Waits for the node and connects the clients. A derived SetUp calls this
+  /// first and returns if HasFatalFailure().
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
+        << "the node did not come up";
+    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick");
+    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick");
+    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset");
+    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks");
+    push_ = nh_.serviceClient<PushBrick>("/brick_sim/push_brick");
+    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
+    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+  }
+
+  /// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
+  static bool waitFor(const std::function<bool()>& done, double seconds) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::WallTime::now() < end) {
+      if (done()) return true;
+      ros::WallDuration(0.01).sleep();
+    }
+    return done();
+  }
+
+  PlaceBrick::Response place(const std::string& id, double x, double y, double z, double yaw = 0.0,
+                             const std::string& type = "kapla") {
+    PlaceBrick srv;
+    srv.request.id = id;
+    srv.request.type = type;
+    srv.request.pose.position.x = x;
+    srv.request.pose.position.y = y;
+    srv.request.pose.position.z = z;
+    srv.request.pose.orientation.z = std::sin(yaw / 2);
+    srv.request.pose.orientation.w = std::cos(yaw / 2);
+    return call(place_, srv);
+  }
+
+  template <typename Service>
+  typename Service::Response call(ros::ServiceClient& client, Service& srv) {
+    EXPECT_TRUE(client.call(srv)) << "call to " << client.getService() << " failed";
+    return srv.response;
+  }
+
+  std::vector<Brick> bricks() {
+    GetBricks srv;
+    EXPECT_TRUE(get_.call(srv));
+    EXPECT_TRUE(srv.response.success) << srv.response.message;
+    return srv.response.bricks;
+  }
+
+  bool setPaused(bool paused) {
+    std_srvs::SetBool srv;
+    srv.request.data = paused;
+    return pause_.call(srv) && srv.response.success;
+  }
+
+  StepSimulation::Response step(unsigned steps) {
+    StepSimulation srv;
+    srv.request.steps = steps;
+    return call(step_, srv);
+  }
+
+  ros::NodeHandle nh_;
+  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_;
+};
+
+}  // namespace test
+}  // namespace ros_adapter
+}  // namespace brick_stack_sim
