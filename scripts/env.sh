@@ -3,5 +3,9 @@
 export PATH="/usr/bin:/bin:${PATH}"
 export PYTHONNOUSERSITE=1
 unset PYTHONHOME PYTHONPATH
+# ROS nodes advertise themselves by host name; where that name does not
+# resolve (containers, chroots, fresh VMs) every rostest fails to reach its
+# own nodes. Loopback always works for a single machine.
+export ROS_HOSTNAME="${ROS_HOSTNAME:-localhost}"
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 workspace="${repo_root}/.catkin_ws"
