@@ -58,8 +58,11 @@ double deepestPenetration(const std::vector<BrickSnapshot>& bricks, const TableO
     Eigen::AlignedBox3d box;
     for (const Eigen::Vector3d& corner : corners(boxes.back())) box.extend(corner);
     bounds.push_back(box);
+    // Into the table: only bricks on it (one that fell off may lie on the
+    // floor under the table top).
     const Eigen::Vector3d& centre = b.pose.translation();
-    if (std::abs(centre.x()) < table.size.x() / 2 && std::abs(centre.y()) < table.size.y() / 2)
+    if (!b.fell_off && std::abs(centre.x()) < table.size.x() / 2 &&
+        std::abs(centre.y()) < table.size.y() / 2)
       deepest = std::max(deepest, -box.min().z());
   }
   for (std::size_t i = 0; i < boxes.size(); ++i)

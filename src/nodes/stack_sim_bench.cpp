@@ -10,10 +10,12 @@ using namespace brick_stack_sim;
 int main(int argc, char** argv) {
   const bool full = argc > 1 && std::strcmp(argv[1], "--full") == 0;
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  if ((!full && !quick) || argc != 3) {
-    std::cerr << "usage: stack_sim_bench --quick|--full OUTPUT.csv\n";
+  // Optional third argument: the cases to run, comma-separated (to redo some).
+  if ((!full && !quick) || argc < 3 || argc > 4) {
+    std::cerr << "usage: stack_sim_bench --quick|--full OUTPUT.csv [CASE,CASE...]\n";
     return 2;
   }
+  const std::string only = argc == 4 ? "," + std::string(argv[3]) + "," : "";
   BenchContext context;
   const std::string data = BRICK_STACK_SIM_DATA_DIR;
   context.scene_dirs = {data + "/scenes"};
@@ -31,6 +33,7 @@ int main(int argc, char** argv) {
   csv << benchCsvHeader();
   const BenchPlan plan = full ? fullBenchPlan() : quickBenchPlan();
   for (const BenchCase& bench_case : plan.cases) {
+    if (!only.empty() && only.find("," + bench_case.label + ",") == std::string::npos) continue;
     for (const BenchSetting& setting : bench_case.settings) {
       BenchRow row;
       if (Status ran = runBenchCase(bench_case, setting, context, plan.divergence, &row); !ran) {
