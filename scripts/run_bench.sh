@@ -16,5 +16,5 @@ runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_bench" "--${plan}" "${
 if command -v taskset >/dev/null; then runner=(taskset -c 0 "${runner[@]}"); fi
 "${runner[@]}"
 /usr/bin/python3 "${repo_root}/bench/plot_bench.py" "${csv}" "${results}"
-{ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
+{ echo "machine: $(nproc --all) cores (the benchmark pinned to one), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
   echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/bench_${plan}_machine.txt"
