@@ -52,6 +52,15 @@ RunReport runScene(const std::string& yaml, double duration) {
   return report;
 }
 
+/// Places a two-brick-per-layer tower (the `tower` generator) at once.
+void placeTower(BrickWorld* world, int layers) {
+  std::vector<ScheduledBrick> tower;
+  TowerParams params;
+  params.layers = layers;
+  ASSERT_TRUE(generateTower(params, world->types(), &tower).ok);
+  for (const ScheduledBrick& b : tower) ASSERT_TRUE(world->addBrick(b.placement).ok);
+}
+
 // --- a brick over the table edge ------------------------------------------
 
 /// A plank along x over the table's +x edge with its centre `overhang` [m]
@@ -268,11 +277,7 @@ TEST(ComStability, BridgeLoadedOffCentrePassesLeverRuleShares) {
 
 TEST(ComStability, RemovingASupporterWakesExactlyTheBricksAboveIt) {
   auto world = test::makeWorld(comOptions());
-  std::vector<ScheduledBrick> tower;
-  TowerParams params;
-  params.layers = 6;
-  ASSERT_TRUE(generateTower(params, world->types(), &tower).ok);
-  for (const ScheduledBrick& b : tower) ASSERT_TRUE(world->addBrick(b.placement).ok);
+  placeTower(world.get(), 6);
   runFor(world.get(), 1.0);
   for (const BrickSnapshot& b : world->snapshot()) ASSERT_EQ(b.state, BrickState::kStable) << b.id;
   world->takeEvents();
@@ -328,11 +333,7 @@ TEST(ComStability, BrickDroppedOntoAFrozenOneAtLongStepsLandsOnIt) {
 TEST(ComStability, FastBrickBouncesOffAFrozenTowerInsteadOfPassingThrough) {
   // Thrown at 8 m/s from 2 cm beside a frozen 4-layer tower: it must hit it.
   auto world = test::makeWorld(comOptions());
-  std::vector<ScheduledBrick> tower;
-  TowerParams params;
-  params.layers = 4;
-  ASSERT_TRUE(generateTower(params, world->types(), &tower).ok);
-  for (const ScheduledBrick& b : tower) ASSERT_TRUE(world->addBrick(b.placement).ok);
+  placeTower(world.get(), 4);
   for (const BrickSnapshot& b : world->snapshot()) ASSERT_EQ(b.state, BrickState::kStable);
   const double tower_face = -kKaplaLength / 2;  // the tower spans x in [-L/2, L/2]
   BrickPlacement thrown = placement(
