@@ -1,16 +1,18 @@
 // Builds a tower through /brick_sim/place_brick, one brick per second of sim
 // time, then prints how many bricks still stand where they were placed and how
 // many of them the stability layer holds frozen (STABLE).
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include <ros/package.h>
 #include <ros/ros.h>
-#include <tf2/LinearMath/Quaternion.h>
 
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/ros/conversions.h"
 
 namespace {
 
@@ -18,7 +20,7 @@ constexpr double kFallenDistance = 0.005;  ///< A brick this far from where it w
 
 struct Placed {
   std::string id;
-  double x, y, z;
+  Eigen::Vector3d position;  ///< Where it rests once down [m].
 };
 
 }  // namespace
@@ -26,22 +28,26 @@ struct Placed {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "demo_tower_client");
   ros::NodeHandle nh("~");
-  // Brick size L x W x H [m]; the defaults are a KAPLA plank (DESIGN.md section 5).
-  const int layers = nh.param("layers", 10);
-  const int per_layer = nh.param("bricks_per_layer", 2);
-  const std::string type = nh.param<std::string>("type", "kapla");
+  const std::string package = ros::package::getPath("brick_stack_sim");
+  brick_stack_sim::TowerParams tower;
+  tower.layers = nh.param("layers", 10);
+  tower.bricks_per_layer = nh.param("bricks_per_layer", 2);
+  tower.type = nh.param<std::string>("type", "kapla");
+  tower.interval = nh.param("interval", 1.0);  // [s] sim time between bricks
+  tower.gap = nh.param("gap", 0.0);            // [m] drop height of each brick onto the layer below
   const double settle_time = nh.param("settle_time", 5.0);  // [s] sim time after the last brick
-  const double interval = nh.param("interval", 1.0);        // [s] sim time between bricks
-  const double length = nh.param("brick_length", 0.117);
-  const double width = nh.param("brick_width", 0.0234);
-  const double height = nh.param("brick_height", 0.0078);
-  const double gap = nh.param("gap", 0.0);  // [m] drop height of each brick onto the layer below
   const std::string sim = nh.param<std::string>("sim", "/brick_sim");
-  if (layers < 1 || (per_layer != 2 && per_layer != 3) || !(interval >= 0.0) ||
-      !(settle_time >= 0.0) || !(length > width && width > 0.0 && height > 0.0) || !(gap >= 0.0)) {
-    ROS_FATAL(
-        "bad parameters: need ~layers >= 1, ~bricks_per_layer 2 or 3, ~interval >= 0, "
-        "~settle_time >= 0, brick_length > brick_width > 0, brick_height > 0, gap >= 0");
+  // The tower's geometry is the core's `tower` generator, with the brick
+  // sizes of the package's URDF: the same tower as scenes/tower10.yaml.
+  brick_stack_sim::BrickTypeLibrary types;
+  std::vector<brick_stack_sim::ScheduledBrick> bricks;
+  brick_stack_sim::Status status = brick_stack_sim::BrickTypeLibrary::load(
+      nh.param<std::string>("types_urdf", package + "/urdf/bricks.urdf"),
+      nh.param<std::string>("materials_yaml", package + "/config/bricks.yaml"), &types);
+  if (status) status = brick_stack_sim::generateTower(tower, types, &bricks);
+  if (!status || !(settle_time >= 0.0)) {
+    ROS_FATAL("bad parameters: %s",
+              status ? "~settle_time must be >= 0 s" : status.message.c_str());
     return 1;
   }
 
@@ -57,31 +63,20 @@ int main(int argc, char** argv) {
   ros::ServiceClient place = nh.serviceClient<brick_stack_sim::PlaceBrick>(place_name);
   ros::ServiceClient get = nh.serviceClient<brick_stack_sim::GetBricks>(get_name);
 
-  const int total = layers * per_layer;
-  const double offset = 0.5 * (length - width);  // outer bricks rest across the ends below
+  const int total = static_cast<int>(bricks.size());
+  const double height = types.find(bricks.front().placement.type)->size.z();
   std::vector<Placed> placed;
   int refused = 0;
   const ros::Time start = ros::Time::now();
   for (int i = 0; i < total && ros::ok(); ++i) {
-    const int layer = i / per_layer;
-    const int slot = i % per_layer;
-    // Slots: -offset, +offset, then the middle brick of a three-brick layer.
-    const double across = slot == 0 ? -offset : slot == 1 ? offset : 0.0;
-    const bool along_x = layer % 2 == 0;
+    const brick_stack_sim::BrickPlacement& brick = bricks[i].placement;
+    const int layer = i / tower.bricks_per_layer;
     brick_stack_sim::PlaceBrick srv;
     srv.request.id = "tower_" + std::to_string(i);
-    srv.request.type = type;
-    srv.request.pose.position.x = along_x ? 0.0 : across;
-    srv.request.pose.position.y = along_x ? across : 0.0;
-    srv.request.pose.position.z = 0.5 * height + layer * (height + gap);
-    tf2::Quaternion q;
-    q.setRPY(0.0, 0.0, along_x ? 0.0 : M_PI / 2);
-    srv.request.pose.orientation.x = q.x();
-    srv.request.pose.orientation.y = q.y();
-    srv.request.pose.orientation.z = q.z();
-    srv.request.pose.orientation.w = q.w();
+    srv.request.type = brick.type;
+    srv.request.pose = brick_stack_sim::ros_adapter::toPoseMsg(brick.pose);
 
-    ros::Time::sleepUntil(start + ros::Duration(i * interval));
+    ros::Time::sleepUntil(start + ros::Duration(bricks[i].at));
     if (!place.call(srv)) {
       ROS_FATAL("call to %s failed", place_name.c_str());
       return 1;
@@ -91,9 +86,10 @@ int main(int argc, char** argv) {
       std::printf("brick %d/%d (layer %d) refused: %s\n", i + 1, total, layer + 1,
                   srv.response.message.c_str());
     } else {
-      const auto& p = srv.request.pose.position;
       // Compared later with where the brick rests, not where it was dropped from.
-      placed.push_back({srv.response.id, p.x, p.y, 0.5 * height + layer * height});
+      Eigen::Vector3d rest = brick.pose.translation();
+      rest.z() = (layer + 0.5) * height;
+      placed.push_back({srv.response.id, rest});
       std::printf("placed brick %d/%d (layer %d) at t=%.1f s\n", i + 1, total, layer + 1,
                   ros::Time::now().toSec());
     }
@@ -101,9 +97,9 @@ int main(int argc, char** argv) {
   }
 
   ros::Duration(settle_time).sleep();
-  brick_stack_sim::GetBricks bricks;
+  brick_stack_sim::GetBricks response;
   if (!ros::ok()) return 1;
-  if (!get.call(bricks) || !bricks.response.success) {
+  if (!get.call(response) || !response.response.success) {
     ROS_FATAL("call to %s failed", get_name.c_str());
     return 1;
   }
@@ -111,14 +107,12 @@ int main(int argc, char** argv) {
   int stable = 0;  // frozen by the stability layer; always 0 in mode none
   for (const Placed& mine : placed) {
     bool found = false;
-    for (const auto& brick : bricks.response.bricks) {
+    for (const auto& brick : response.response.bricks) {
       if (brick.id != mine.id) continue;
       found = true;
       if (brick.state == brick_stack_sim::Brick::STABLE) ++stable;
       const auto& p = brick.pose.position;
-      const double moved =
-          std::sqrt((p.x - mine.x) * (p.x - mine.x) + (p.y - mine.y) * (p.y - mine.y) +
-                    (p.z - mine.z) * (p.z - mine.z));
+      const double moved = (Eigen::Vector3d(p.x, p.y, p.z) - mine.position).norm();
       if (brick.fell_off || moved > kFallenDistance) ++fallen;
     }
     if (!found) ++fallen;  // gone: removed by someone, or never there

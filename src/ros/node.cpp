@@ -169,8 +169,9 @@ void SimNode::publishEvents() {
         options_.publish_clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
     msg.header.frame_id = options_.frame_id;
     if (event.kind == SimEventKind::kNonFinite) {
-      ROS_WARN("brick %s: Bullet produced a non-finite value at %s; restored (%s)",
-               event.brick_id.c_str(), formatTime(t).c_str(), event.reason.c_str());
+      // NaN, Inf or a runaway speed: the reason says which and how it was repaired.
+      ROS_WARN("brick %s at %s: %s", event.brick_id.c_str(), formatTime(t).c_str(),
+               event.reason.c_str());
     }
     events_publisher_.publish(msg);
   }
