@@ -11,7 +11,7 @@
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/core/brick_type.h"
-#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "brick_stack_sim/core/benchmark.h"
+#include "brick_stack_sim/tools/benchmark.h"
 
 using namespace brick_stack_sim;
 

@@ -3,8 +3,8 @@
 #include <fstream>
 #include <iostream>
 
-#include "brick_stack_sim/core/batch_runner.h"
-#include "brick_stack_sim/core/run_command_line.h"
+#include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/tools/run_command_line.h"
 
 using namespace brick_stack_sim;
 

@@ -10,7 +10,7 @@
 
 #include "brick_stack_sim/BrickArray.h"
 #include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/ros/conversions.h"
 #include "brick_stack_sim/ros/markers.h"
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/batch_runner.h"
-#include "brick_stack_sim/core/run_command_line.h"
+#include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/tools/run_command_line.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/box_geometry.h"
-#include "brick_stack_sim/core/polygon2d.h"
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/polygon2d.h"
 
 namespace brick_stack_sim {
 namespace {

@@ -8,7 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/batch_runner.h"
+#include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/core/scene/generators.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/brick_world.h"
-#include "brick_stack_sim/core/scene.h"
-#include "brick_stack_sim/core/scene_player.h"
+#include "brick_stack_sim/core/world/brick_world.h"
+#include "brick_stack_sim/core/scene/generators.h"
+#include "brick_stack_sim/core/scene/scene_player.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/brick_world.h"
+#include "brick_stack_sim/core/world/brick_world.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

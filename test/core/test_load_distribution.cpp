@@ -3,7 +3,7 @@
 // every point of action inside its own patch.
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/load_distribution.h"
+#include "brick_stack_sim/core/geometry/load_distribution.h"
 
 namespace brick_stack_sim {
 namespace {

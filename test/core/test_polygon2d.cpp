@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/polygon2d.h"
+#include "brick_stack_sim/core/geometry/polygon2d.h"
 
 namespace brick_stack_sim {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/scene.h"
+#include "brick_stack_sim/core/scene/generators.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/batch_runner.h"
-#include "brick_stack_sim/core/box_geometry.h"
+#include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "test_support.h"
 
 namespace brick_stack_sim {

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/brick_world.h"
+#include "brick_stack_sim/core/world/brick_world.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {

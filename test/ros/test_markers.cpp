@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/polygon2d.h"
+#include "brick_stack_sim/core/geometry/polygon2d.h"
 #include "brick_stack_sim/ros/markers.h"
 #include "com_world.h"
 

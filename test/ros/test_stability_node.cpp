@@ -19,7 +19,7 @@
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/core/world_options.h"
+#include "brick_stack_sim/core/world/world_options.h"
 #include "com_world.h"
 #include "node_fixture.h"
 

@@ -16,8 +16,8 @@
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/core/brick_type.h"
-#include "brick_stack_sim/core/brick_world.h"
-#include "brick_stack_sim/core/scene_player.h"
+#include "brick_stack_sim/core/world/brick_world.h"
+#include "brick_stack_sim/core/scene/scene_player.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/ros/node_options.h"
 

@@ -8,7 +8,7 @@
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world_options.h"
+#include "brick_stack_sim/core/world/world_options.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {

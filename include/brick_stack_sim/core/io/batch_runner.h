@@ -1,0 +1,57 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/world/brick_world.h"
+#include "brick_stack_sim/core/scene/scene.h"
+#include "brick_stack_sim/core/scene/scene_player.h"
+#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+/// How to run a scene without ROS.
+struct RunOptions {
+  WorldOptions world;              ///< Table is replaced by the scene's when it has one.
+  std::optional<double> duration;  ///< Sim time [s]; default: last placement + 5 s.
+  /// Called after every step and its placements (benchmarks sample with it).
+  std::function<void(const BrickWorld&)> observer;
+};
+
+/// A brick's end state compared with where it was placed.
+struct BrickOutcome {
+  BrickSnapshot brick;
+  double displacement = 0.0;  ///< |final - placed position| [m].
+  double rotation = 0.0;      ///< Angle between final and placed orientation [rad].
+};
+
+struct RunReport {
+  std::string scene;
+  WorldOptions world;
+  double sim_time = 0.0;
+  double wall_time = 0.0;  ///< [s]
+  CostCounters cost;
+  std::vector<BrickOutcome> bricks;
+  std::vector<SimEvent> events;
+  std::vector<RefusedPlacement> refused;
+  std::size_t scheduled = 0;  ///< Bricks the scene places within the duration.
+
+  /// Placed bricks missing at the end; anything but 0 is a defect.
+  std::size_t lost() const { return scheduled - refused.size() - bricks.size(); }
+
+  double maxDisplacement() const;  ///< [m]; 0 with no bricks.
+};
+
+/// Runs `scene` for the requested duration, placing each brick at its time.
+Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
+                RunReport* report);
+
+/// The report as JSON with the keys of DESIGN.md section 4 (and a few more).
+std::string toJson(const RunReport& report);
+
+}  // namespace brick_stack_sim

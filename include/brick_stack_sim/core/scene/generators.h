@@ -1,0 +1,99 @@
+#pragma once
+// The scene generators (DESIGN.md section 4): parametric structures whose
+// statics are known, so scenes, benchmarks and tests can build them exactly.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/scene/scene.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+/// Parameters of the `tower` generator.
+struct TowerParams {
+  int layers = 10;
+  int bricks_per_layer = 2;  ///< 2 or 3.
+  std::string type;          ///< Empty: the default type.
+  double start = 0.0;        ///< Time of the first placement [s].
+  double interval = 0.0;     ///< Time between placements [s]; 0: all at `start`.
+  double gap = 0.0;          ///< Vertical clearance between layers at placement [m].
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the (first) tower [m].
+  int grid_x = 1, grid_y = 1;                        ///< Copies of the tower along x and y.
+  double spacing = 0.13;                             ///< Distance between copies [m].
+};
+
+/// Parameters of the `harmonic` generator (DESIGN.md section 5): n bricks
+/// stacked over the table's +x edge, brick i from the top overhanging the one
+/// below (the table edge for the lowest) by factor * L / (2 i). Statics: it
+/// stands for factor < 1 and falls for factor > 1.
+struct HarmonicParams {
+  int bricks = 4;
+  double factor = 0.95;
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s] between placements, bottom brick first.
+};
+
+/// Parameters of the `slant_tower` generator: one brick per layer along x,
+/// each layer shifted by `offset` in +x from the one below.
+struct SlantTowerParams {
+  int layers = 10;
+  double offset = 0.01;  ///< [m]
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s]
+};
+
+/// Parameters of the `pyramid` generator: rows of bricks along x laid end to
+/// end, each row one brick shorter and resting across the joints below.
+struct PyramidParams {
+  int base = 20;       ///< Bricks in the lowest row; base (base + 1) / 2 in all.
+  double gap = 0.002;  ///< Gap between neighbours in a row [m].
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s]
+};
+
+/// Parameters of the `pile` generator: bricks dropped from a lattice above the
+/// table with pseudo-random yaw, tilt and offsets (fixed seed: reproducible).
+struct PileParams {
+  int bricks = 1000;
+  int columns = 7;             ///< Lattice cells along x.
+  int rows = 5;                ///< Lattice cells along y.
+  double cell = 0.13;          ///< Lattice pitch [m]; a KAPLA turned any way spans 0.119 m.
+  double layer_height = 0.04;  ///< Vertical pitch [m]; a KAPLA tilted 0.2 rad spans 0.036 m.
+  double base_height = 0.03;   ///< Height of the lowest layer's centres [m].
+  double max_tilt = 0.2;       ///< Largest roll and pitch [rad].
+  unsigned seed = 1;
+  std::string type;
+  double start = 0.0;                                ///< [s]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the lattice [m].
+};
+
+/// Appends a tower: layers alternate between bricks along x and along y, each
+/// layer resting across the ends of the one below.
+Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
+                     std::vector<ScheduledBrick>* bricks);
+
+/// Appends a harmonic stack at the +x edge of `table`.
+Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
+                        const BrickTypeLibrary& types, std::vector<ScheduledBrick>* bricks);
+
+/// Appends a slant tower starting at the table centre.
+Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
+                          std::vector<ScheduledBrick>* bricks);
+
+/// Appends a pyramid (running bond) centred on the table.
+Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
+                       std::vector<ScheduledBrick>* bricks);
+
+/// Appends a pile drop.
+Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
+                    std::vector<ScheduledBrick>* bricks);
+
+}  // namespace brick_stack_sim

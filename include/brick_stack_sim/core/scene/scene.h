@@ -1,0 +1,41 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+/// A brick of a scene and the sim time at which it is placed.
+struct ScheduledBrick {
+  BrickPlacement placement;
+  double at = 0.0;  ///< Placement time [s].
+};
+
+/// A scene (DESIGN.md section 4): an optional table override, optional extra
+/// brick types, and bricks with placement times, sorted by `at` (stable).
+/// `generator` may be one generator or a list of them.
+struct Scene {
+  std::string name;
+  std::optional<TableOptions> table;
+  std::vector<BrickType> types;
+  std::vector<ScheduledBrick> bricks;
+};
+
+/// Parses a scene from YAML text. `types` resolves the generators' brick sizes
+/// (together with the scene's own types); `name` is used when the yaml has none.
+Status parseScene(const std::string& yaml_text, const std::string& name,
+                  const BrickTypeLibrary& types, Scene* scene);
+/// Loads a scene from a file, or by name from `scene_dirs` (`<dir>/<name>.yaml`).
+Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
+                 const BrickTypeLibrary& types, Scene* scene);
+
+/// Adds the scene's own types to `types` (the scene's win on a name clash).
+Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
+
+}  // namespace brick_stack_sim

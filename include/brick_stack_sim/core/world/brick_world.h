@@ -1,0 +1,86 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+/// What the simulation has spent, for benchmarks.
+struct CostCounters {
+  std::uint64_t steps = 0;              ///< Calls to step().
+  std::uint64_t bullet_steps = 0;       ///< Steps that advanced Bullet.
+  std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
+  std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
+  std::uint64_t blowups = 0;            ///< Runaway speeds (diverged solver) caught and repaired.
+  std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
+  // Wall time per stage [s], for the benchmark's cost shares.
+  double bullet_seconds = 0.0;     ///< Bullet's stepSimulation and the finiteness check.
+  double contact_seconds = 0.0;    ///< Reading contacts from Bullet's manifolds.
+  double stability_seconds = 0.0;  ///< The stability model and freeze / wake.
+};
+
+/// Bricks on a table, simulated by Bullet in double precision with a fixed
+/// time step, with an optional stability model on top (WorldOptions::mode)
+/// that freezes bricks resting stably and wakes them when their load leaves
+/// their support. Every request is validated first: a refused request returns an
+/// error Status and leaves the world exactly as it was. Bricks are kept in
+/// placement order, so the same calls in the same order give bit-identical
+/// results.
+class BrickWorld {
+ public:
+  /// Fails (and leaves `world` empty) when the options or types are invalid.
+  static Status create(const WorldOptions& options, const BrickTypeLibrary& types,
+                       std::unique_ptr<BrickWorld>* world);
+  ~BrickWorld();
+  BrickWorld(const BrickWorld&) = delete;
+  BrickWorld& operator=(const BrickWorld&) = delete;
+
+  /// Would addBrick() accept this placement? Nothing changes.
+  Status checkPlacement(const BrickPlacement& placement) const;
+  /// Adds a brick; `assigned_id` (optional) receives its id.
+  Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr);
+  /// Removes a brick; what rested on it is woken.
+  Status removeBrick(const std::string& id);
+  /// Applies an impulse [N s] at a world point [m] to a brick, waking it.
+  Status applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
+                      const Eigen::Vector3d& point);
+  /// Removes every brick (an event each); the clock keeps running so that
+  /// simulated time never goes backwards for observers.
+  void clear();
+
+  /// Advances the world by one fixed time step.
+  void step();
+
+  double time() const;  ///< Sim time [s].
+  const WorldOptions& options() const;
+  const BrickTypeLibrary& types() const;
+  const CostCounters& cost() const;
+
+  std::size_t brickCount() const;
+  /// Every brick, in placement order.
+  std::vector<BrickSnapshot> snapshot() const;
+  /// One brick; false when the id is unknown.
+  bool find(const std::string& id, BrickSnapshot* brick) const;
+  /// The support patches of a brick as the stability model sees them; false
+  /// when the id is unknown or the model knows nothing of it (mode none).
+  bool supportGeometry(const std::string& id, SupportGeometry* geometry) const;
+  /// Events since the last call, oldest first.
+  std::vector<SimEvent> takeEvents();
+
+ private:
+  struct Impl;
+  explicit BrickWorld(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+/// One way of simulating: a stability mode with Bullet's settings.
+struct BenchSetting {
+  std::string mode_label;  ///< none_nosleep, none_sleep, com
+  StabilityMode mode = StabilityMode::kNone;
+  bool sleeping = true;
+  double time_step = 1e-3;  ///< [s]
+  int iterations = 20;
+};
+
+/// What error a case measures against ground truth.
+enum class BenchMetric {
+  kSettled,     ///< A structure at rest: drift [mm] over the duration, penetration.
+  kDrop,        ///< Everything moves: penetration [mm]; cost is the point.
+  kHarmonic,    ///< Harmonic stack: |measured threshold factor - 1| [% of f].
+  kSlantTower,  ///< Slant tower: measured - statics collapse layer [layers].
+};
+
+struct BenchCase {
+  std::string label;  ///< Row label, e.g. "tower25".
+  std::string scene;  ///< Scene name or path (for kHarmonic: the brick count is `bricks`).
+  BenchMetric metric = BenchMetric::kSettled;
+  double duration = 10.0;  ///< Sim time per run [s].
+  int bricks = 10;         ///< kHarmonic: stack height.
+  double offset = 0.011;   ///< kSlantTower: layer shift [m].
+  /// Runs of a short case; the fastest counts, as the least disturbed by the
+  /// rest of a shared machine (kSettled and kDrop).
+  int repeats = 1;
+  std::vector<BenchSetting> settings;
+};
+
+struct BenchPlan {
+  std::vector<BenchCase> cases;
+  /// Also measure divergence from a reference run at dt = 1/4000 s with 100
+  /// iterations (Erez, Tassa, Todorov 2015) over the first second.
+  bool divergence = false;
+};
+
+/// One row of bench/results/*.csv.
+struct BenchRow {
+  std::string label, scene;
+  BenchSetting setting;
+  std::size_t bricks = 0;
+  double sim_time = 0.0;   ///< [s], summed over the runs of the row.
+  double wall_time = 0.0;  ///< Stepping wall time [s], setup excluded.
+  double bullet_seconds = 0.0, contact_seconds = 0.0, stability_seconds = 0.0;
+  unsigned long long bullet_steps = 0, awake_brick_steps = 0, steps = 0;
+  double drift_mm = -1.0;  ///< -1: not measured by this case.
+  double penetration_mm = -1.0;
+  double collapse_layer_error = -1e9;  ///< -1e9: not measured.
+  double threshold_error_pct = -1.0;
+  double divergence_mm = -1.0;
+  unsigned long long nonfinite = 0;
+  std::size_t lost = 0;     ///< Bricks placed but missing at the end (must be 0).
+  std::size_t refused = 0;  ///< Scene placements the world refused.
+};
+
+/// The two-minute subset (`make bench-quick`) and the whole sweep (`make bench`).
+BenchPlan quickBenchPlan();
+BenchPlan fullBenchPlan();
+
+/// Where the benchmark finds brick types and scenes.
+struct BenchContext {
+  BrickTypeLibrary types;
+  std::vector<std::string> scene_dirs;
+  /// Reference runs (1/4000 s, 100 iterations) are costly and the same for
+  /// every setting of a case and mode: computed once, by "scene/mode".
+  mutable std::map<std::string, std::vector<BrickSnapshot>> references;
+};
+
+/// Runs one case at one setting.
+Status runBenchCase(const BenchCase& bench_case, const BenchSetting& setting,
+                    const BenchContext& context, bool divergence, BenchRow* row);
+
+std::string benchCsvHeader();
+std::string toCsv(const BenchRow& row);
+
+/// Statics of the slant tower: the first layer count n for which the COM of
+/// bricks 2..n (at (j - 1) d) passes the right end of brick 1, n d > L.
+int slantTowerCollapseLayer(double offset, double length);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,130 @@
+// Bullet's GrahamScanConvexHull2D was the library candidate, but it sorts by
+// btAtan2Fast (errors of ~1e-2 rad) and treats points within sqrt(FLT_EPSILON)
+// = 0.35 mm of the anchor as coincident: at brick scale that drops real corners
+// of a contact patch. The monotone chain below needs only exact cross products.
+#include "brick_stack_sim/core/geometry/polygon2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace brick_stack_sim {
+
+namespace {
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length_squared = ab.squaredNorm();
+  const double t =
+      length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+}  // namespace
+
+Polygon2d convexHull(std::vector<Eigen::Vector2d> points, double merge_distance) {
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  Polygon2d unique;
+  for (const Eigen::Vector2d& p : points) {
+    const bool duplicate = std::any_of(unique.begin(), unique.end(), [&](const Eigen::Vector2d& q) {
+      return (p - q).norm() <= merge_distance;
+    });
+    if (!duplicate) unique.push_back(p);
+  }
+  if (unique.size() < 3) return unique;
+
+  Polygon2d hull(2 * unique.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < unique.size(); ++i) {  // lower chain
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], unique[i]) <= 0.0) --k;
+    hull[k++] = unique[i];
+  }
+  for (std::size_t i = unique.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], unique[i]) <= 0.0) --k;
+    hull[k++] = unique[i];
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  if (hull.size() < 3) {
+    // All points collinear: keep the two extremes as a segment.
+    return Polygon2d{unique.front(), unique.back()};
+  }
+  return hull;
+}
+
+double signedDistance(const Polygon2d& hull, const Eigen::Vector2d& point) {
+  if (hull.empty()) return -std::numeric_limits<double>::infinity();
+  if (hull.size() == 1) return -(point - hull[0]).norm();
+  if (hull.size() == 2) return -distanceToSegment(point, hull[0], hull[1]);
+  double nearest_edge = std::numeric_limits<double>::infinity();
+  bool inside = true;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d& a = hull[i];
+    const Eigen::Vector2d& b = hull[(i + 1) % hull.size()];
+    if (cross(a, b, point) < 0.0) inside = false;  // right of a counter-clockwise edge
+    nearest_edge = std::min(nearest_edge, distanceToSegment(point, a, b));
+  }
+  return inside ? nearest_edge : -nearest_edge;
+}
+
+bool contains(const Polygon2d& hull, const Eigen::Vector2d& point, double tolerance) {
+  return signedDistance(hull, point) >= -tolerance;
+}
+
+Polygon2d intersectConvex(const Polygon2d& subject, const Polygon2d& clip) {
+  if (subject.size() < 3 || clip.size() < 3) return {};
+  // Sutherland-Hodgman: clip by each edge's inner half-plane in turn.
+  Polygon2d output = subject;
+  for (std::size_t i = 0; i < clip.size() && !output.empty(); ++i) {
+    const Eigen::Vector2d& a = clip[i];
+    const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
+    const Polygon2d input = output;
+    output.clear();
+    for (std::size_t j = 0; j < input.size(); ++j) {
+      const Eigen::Vector2d& p = input[j];
+      const Eigen::Vector2d& q = input[(j + 1) % input.size()];
+      const double side_p = cross(a, b, p), side_q = cross(a, b, q);
+      if (side_p >= 0.0) output.push_back(p);
+      if ((side_p >= 0.0) != (side_q >= 0.0))
+        output.push_back(p + (q - p) * (side_p / (side_p - side_q)));
+    }
+  }
+  const Polygon2d hull = convexHull(output);
+  return hull.size() < 3 ? Polygon2d{} : hull;
+}
+
+double area(const Polygon2d& hull) {
+  if (hull.size() < 3) return 0.0;
+  double twice = 0.0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d& a = hull[i];
+    const Eigen::Vector2d& b = hull[(i + 1) % hull.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * twice;
+}
+
+Eigen::Vector2d centroid(const Polygon2d& hull) {
+  if (hull.empty()) return Eigen::Vector2d::Zero();
+  const double total = area(hull);
+  if (hull.size() < 3 || total <= 0.0) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& p : hull) mean += p;
+    return mean / static_cast<double>(hull.size());
+  }
+  // Fan from the first vertex: area-weighted triangle centroids.
+  Eigen::Vector2d weighted = Eigen::Vector2d::Zero();
+  for (std::size_t i = 1; i + 1 < hull.size(); ++i) {
+    const double triangle = 0.5 * cross(hull[0], hull[i], hull[i + 1]);
+    weighted += triangle * (hull[0] + hull[i] + hull[i + 1]) / 3.0;
+  }
+  return weighted / total;
+}
+
+}  // namespace brick_stack_sim

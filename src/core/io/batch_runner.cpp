@@ -1,0 +1,148 @@
+#include "brick_stack_sim/core/io/batch_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "io/json_writer.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// Sim time after which a scene's last brick has had time to settle [s].
+constexpr double kDefaultSettleTime = 5.0;
+
+BrickOutcome outcomeOf(const BrickSnapshot& brick) {
+  BrickOutcome outcome;
+  outcome.brick = brick;
+  outcome.displacement = (brick.pose.translation() - brick.placed_pose.translation()).norm();
+  outcome.rotation =
+      Eigen::AngleAxisd(brick.placed_pose.linear().transpose() * brick.pose.linear()).angle();
+  return outcome;
+}
+
+}  // namespace
+
+double RunReport::maxDisplacement() const {
+  double largest = 0.0;
+  for (const BrickOutcome& b : bricks) largest = std::max(largest, b.displacement);
+  return largest;
+}
+
+Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
+                RunReport* report) {
+  BrickTypeLibrary all_types = types;
+  if (Status merged = mergeSceneTypes(scene, &all_types); !merged) return merged;
+  WorldOptions world_options = options.world;
+  if (scene.table) world_options.table = *scene.table;
+  std::unique_ptr<BrickWorld> world;
+  if (Status created = BrickWorld::create(world_options, all_types, &world); !created)
+    return created;
+
+  const double last_placement = scene.bricks.empty() ? 0.0 : scene.bricks.back().at;
+  const double duration = options.duration.value_or(last_placement + kDefaultSettleTime);
+  if (!std::isfinite(duration) || duration < 0.0)
+    return Status::error("duration must be finite and >= 0 s");
+  const auto steps = static_cast<std::uint64_t>(std::llround(duration / world_options.time_step));
+
+  RunReport result;
+  result.scene = scene.name;
+  result.world = world_options;
+  ScenePlayer player(scene.bricks, 0.0);
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto refused = player.placeDue(world.get());
+  for (std::uint64_t i = 0; i < steps; ++i) {
+    world->step();
+    if (!player.done()) {
+      auto more = player.placeDue(world.get());
+      refused.insert(refused.end(), more.begin(), more.end());
+    }
+    if (options.observer) options.observer(*world);
+  }
+  result.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  result.sim_time = world->time();
+  result.cost = world->cost();
+  result.refused = std::move(refused);
+  result.scheduled = scene.bricks.size() - player.pending();
+  for (const BrickSnapshot& brick : world->snapshot()) result.bricks.push_back(outcomeOf(brick));
+  result.events = world->takeEvents();
+  *report = std::move(result);
+  return Status::success();
+}
+
+std::string toJson(const RunReport& r) {
+  JsonWriter json;
+  json.beginObject();
+  json.key("scene").value(r.scene);
+  json.key("mode").value(toString(r.world.mode));
+  json.key("time_step").value(r.world.time_step);
+  json.key("iterations").value(static_cast<unsigned long long>(r.world.solver_iterations));
+  json.key("sleeping").value(r.world.sleeping);
+  json.key("sim_time").value(r.sim_time);
+  json.key("wall_time").value(r.wall_time);
+  json.key("steps").value(static_cast<unsigned long long>(r.cost.steps));
+  json.key("nonfinite").value(static_cast<unsigned long long>(r.cost.nonfinite));
+  json.key("blowups").value(static_cast<unsigned long long>(r.cost.blowups));
+  json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
+  json.key("lost").value(static_cast<unsigned long long>(r.lost()));
+  json.key("cost").beginObject();
+  json.key("bullet_steps").value(static_cast<unsigned long long>(r.cost.bullet_steps));
+  json.key("awake_brick_steps").value(static_cast<unsigned long long>(r.cost.awake_brick_steps));
+  json.key("stability_updates").value(static_cast<unsigned long long>(r.cost.stability_updates));
+  json.endObject();
+  // Wall time of each stage, like wall_time not reproducible between runs.
+  json.key("stage_seconds").beginObject();
+  json.key("bullet").value(r.cost.bullet_seconds);
+  json.key("contacts").value(r.cost.contact_seconds);
+  json.key("stability").value(r.cost.stability_seconds);
+  json.endObject();
+  json.key("max_displacement").value(r.maxDisplacement());
+  json.key("bricks").beginArray();
+  for (const BrickOutcome& outcome : r.bricks) {
+    const BrickSnapshot& b = outcome.brick;
+    const Eigen::Quaterniond q(b.pose.linear());
+    const double orientation[4] = {q.x(), q.y(), q.z(), q.w()};
+    json.beginObject();
+    json.key("id").value(b.id);
+    json.key("type").value(b.type);
+    json.key("placed_at").value(b.placed_at);
+    json.key("position").numbers(b.pose.translation().data(), 3);
+    json.key("orientation").numbers(orientation, 4);
+    json.key("state").value(toString(b.state));
+    json.key("fell_off").value(b.fell_off);
+    json.key("displacement").value(outcome.displacement);
+    json.key("rotation").value(outcome.rotation);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("events").beginArray();
+  for (const SimEvent& e : r.events) {
+    json.beginObject();
+    json.key("t").value(e.time);
+    json.key("kind").value(toString(e.kind));
+    json.key("brick").value(e.brick_id);
+    json.key("reason").value(e.reason);
+    if (!e.affected.empty()) {
+      json.key("affected").beginArray();
+      for (const std::string& id : e.affected) json.value(id);
+      json.endArray();
+    }
+    json.endObject();
+  }
+  json.endArray();
+  json.key("refused").beginArray();
+  for (const RefusedPlacement& refused : r.refused) {
+    json.beginObject();
+    json.key("t").value(refused.t);
+    json.key("brick").value(refused.id);
+    json.key("reason").value(refused.reason);
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  return json.str() + "\n";
+}
+
+}  // namespace brick_stack_sim

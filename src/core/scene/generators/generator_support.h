@@ -1,0 +1,64 @@
+#pragma once
+// What the scene generators share: their YAML entry point, the checks every
+// generator makes, and the brick type they place.
+
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Core>
+
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/scene/generators.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+#include "scene/yaml_fields.h"
+
+namespace brick_stack_sim {
+
+/// What a generator may build on besides its own parameters.
+struct GeneratorContext {
+  const TableOptions& table;
+  const BrickTypeLibrary& types;
+};
+
+/// Reads a generator's YAML map (`where` names it in messages) and appends its
+/// bricks; throws scene_yaml::SceneError.
+using GeneratorReader = void (*)(const YAML::Node& node, const std::string& where,
+                                 const GeneratorContext& context,
+                                 std::vector<ScheduledBrick>* bricks);
+
+void readTowerGenerator(const YAML::Node& node, const std::string& where,
+                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readHarmonicGenerator(const YAML::Node& node, const std::string& where,
+                           const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readSlantTowerGenerator(const YAML::Node& node, const std::string& where,
+                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readPyramidGenerator(const YAML::Node& node, const std::string& where,
+                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readPileGenerator(const YAML::Node& node, const std::string& where,
+                       const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+
+/// Start and interval of a generator's placements must be finite and >= 0 s.
+Status checkTiming(const char* generator, double start, double interval);
+
+/// The type a generator places: the requested one, or the library's default.
+const BrickType* generatorType(const std::string& requested, const BrickTypeLibrary& types);
+
+/// ROS convention (REP 103): fixed-axis roll about x, then pitch about y, then yaw about z.
+Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy);
+
+/// The fields every generator that places bricks one by one shares.
+template <typename Params>
+void readTypeAndTiming(const YAML::Node& node, const std::string& where, Params* params) {
+  params->type = scene_yaml::readString(node, "type", where);
+  params->start = scene_yaml::readNumber(node, "start", where, params->start);
+  params->interval = scene_yaml::readNumber(node, "interval", where, params->interval);
+}
+
+/// Turns a generator's refusal into the parser's error at `where`.
+inline void failUnless(const Status& generated, const std::string& where) {
+  if (!generated) scene_yaml::fail(where, generated.message);
+}
+
+}  // namespace brick_stack_sim

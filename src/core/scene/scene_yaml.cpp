@@ -1,0 +1,215 @@
+#include "brick_stack_sim/core/scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "scene/generators/generator_support.h"
+#include "scene/yaml_fields.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+using scene_yaml::fail;
+using scene_yaml::readNumber;
+using scene_yaml::readString;
+using scene_yaml::readVector;
+using scene_yaml::requireKnownKeys;
+using scene_yaml::SceneError;
+
+TableOptions readTable(const YAML::Node& node) {
+  const std::string where = "table";
+  requireKnownKeys(node, where, {"size", "thickness", "height", "friction", "restitution"});
+  TableOptions table;
+  table.size = readVector<2>(node, "size", where, table.size);
+  table.thickness = readNumber(node, "thickness", where, table.thickness);
+  table.height = readNumber(node, "height", where, table.height);
+  table.friction = readNumber(node, "friction", where, table.friction);
+  table.restitution = readNumber(node, "restitution", where, table.restitution);
+  return table;
+}
+
+BrickType readType(const std::string& name, const YAML::Node& node) {
+  const std::string where = "types." + name;
+  requireKnownKeys(node, where, {"size", "mass", "friction", "restitution", "rolling_friction"});
+  if (!node["size"] || !node["mass"]) fail(where, "needs 'size' [m] and 'mass' [kg]");
+  BrickType type;
+  type.name = name;
+  type.size = readVector<3>(node, "size", where, type.size);
+  type.mass = readNumber(node, "mass", where, 0.0);
+  // A uniform box: m/12 (b^2 + c^2) about each axis.
+  const Eigen::Vector3d squared = type.size.cwiseProduct(type.size);
+  type.inertia = type.mass / 12.0 *
+                 Eigen::Vector3d(squared.y() + squared.z(), squared.x() + squared.z(),
+                                 squared.x() + squared.y());
+  type.friction = readNumber(node, "friction", where, type.friction);
+  type.restitution = readNumber(node, "restitution", where, type.restitution);
+  type.rolling_friction = readNumber(node, "rolling_friction", where, type.rolling_friction);
+  if (Status valid = validateBrickType(type); !valid) fail(where, valid.message);
+  return type;
+}
+
+ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
+  const std::string where = "bricks[" + std::to_string(index) + "]";
+  requireKnownKeys(node, where,
+                   {"id", "type", "at", "position", "rpy", "orientation", "linear_velocity",
+                    "angular_velocity"});
+  if (!node["position"]) fail(where, "needs a 'position' [m]");
+  if (node["rpy"] && node["orientation"])
+    fail(where, "give either 'rpy' or 'orientation', not both");
+  ScheduledBrick brick;
+  brick.placement.id = readString(node, "id", where);
+  brick.placement.type = readString(node, "type", where);
+  brick.at = readNumber(node, "at", where, 0.0);
+  if (brick.at < 0.0) fail(where + ".at", "must be >= 0 s");
+  brick.placement.pose.translation() =
+      readVector<3>(node, "position", where, Eigen::Vector3d::Zero());
+  if (node["orientation"]) {
+    const Eigen::Vector4d xyzw = readVector<4>(node, "orientation", where, Eigen::Vector4d::Zero());
+    if (std::abs(xyzw.norm() - 1.0) > 1e-3)
+      fail(where + ".orientation", "must be a unit quaternion [x, y, z, w]");
+    brick.placement.pose.linear() =
+        Eigen::Quaterniond(xyzw[3], xyzw[0], xyzw[1], xyzw[2]).normalized().toRotationMatrix();
+  } else {
+    brick.placement.pose.linear() =
+        rotationFromRpy(readVector<3>(node, "rpy", where, Eigen::Vector3d::Zero()));
+  }
+  brick.placement.linear_velocity =
+      readVector<3>(node, "linear_velocity", where, Eigen::Vector3d::Zero());
+  brick.placement.angular_velocity =
+      readVector<3>(node, "angular_velocity", where, Eigen::Vector3d::Zero());
+  return brick;
+}
+
+struct GeneratorEntry {
+  const char* name;
+  GeneratorReader read;
+};
+
+/// Every generator a scene may name, one file each under generators/.
+constexpr GeneratorEntry kGenerators[] = {
+    {"tower", &readTowerGenerator},
+    {"harmonic", &readHarmonicGenerator},
+    {"slant_tower", &readSlantTowerGenerator},
+    {"pyramid", &readPyramidGenerator},
+    {"pile", &readPileGenerator},
+};
+
+void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
+                  std::vector<ScheduledBrick>* bricks) {
+  const std::string where = "generator";
+  if (!node.IsMap() || !node["name"]) fail(where, "needs a 'name'");
+  const std::string name = readString(node, "name", where);
+  std::string available;
+  for (const GeneratorEntry& generator : kGenerators) {
+    if (name == generator.name)
+      return generator.read(node, where, GeneratorContext{table, types}, bricks);
+    available += (available.empty() ? "" : ", ") + std::string(generator.name);
+  }
+  fail(where, "unknown generator '" + name + "' (available: " + available + ")");
+}
+
+bool isFile(const std::string& path) {
+  std::ifstream file(path);
+  return file.good();
+}
+
+std::string stem(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = base.rfind(".yaml");
+  return dot == std::string::npos ? base : base.substr(0, dot);
+}
+
+}  // namespace
+
+Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types) {
+  for (const BrickType& type : scene.types) {
+    if (Status added = types->add(type); !added) return added;
+  }
+  return Status::success();
+}
+
+Status parseScene(const std::string& yaml_text, const std::string& name,
+                  const BrickTypeLibrary& types, Scene* scene) {
+  Scene result;
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    if (!root.IsMap()) return Status::error("scene '" + name + "': expected a map at the top");
+    requireKnownKeys(root, "scene", {"name", "table", "types", "generator", "bricks"});
+    result.name = readString(root, "name", "scene", name);
+    if (root["table"]) result.table = readTable(root["table"]);
+    if (root["types"]) {
+      if (!root["types"].IsMap()) fail("types", "expected a map of name: {size, mass, ...}");
+      for (const auto& entry : root["types"])
+        result.types.push_back(readType(entry.first.as<std::string>(), entry.second));
+    }
+    BrickTypeLibrary all_types = types;
+    if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);
+    if (const YAML::Node generators = root["generator"]) {
+      const TableOptions table = result.table.value_or(TableOptions());
+      if (generators.IsSequence()) {
+        for (const YAML::Node& generator : generators)
+          runGenerator(generator, table, all_types, &result.bricks);
+      } else {
+        runGenerator(generators, table, all_types, &result.bricks);
+      }
+    }
+    if (root["bricks"]) {
+      if (!root["bricks"].IsSequence()) fail("bricks", "expected a list");
+      std::size_t index = 0;
+      for (const auto& node : root["bricks"]) result.bricks.push_back(readBrick(node, index++));
+    }
+    std::set<std::string> ids;
+    for (const ScheduledBrick& brick : result.bricks) {
+      const std::string& id = brick.placement.id;
+      if (!id.empty() && !ids.insert(id).second) fail("bricks", "id '" + id + "' appears twice");
+      const std::string& type = brick.placement.type;
+      if (!type.empty() && !all_types.find(type))
+        fail("bricks", "brick '" + id + "' has unknown type '" + type + "'");
+    }
+  } catch (const SceneError& error) {
+    return Status::error("scene '" + name + "': " + error.message);
+  } catch (const YAML::Exception& error) {
+    return Status::error("scene '" + name + "': " + error.what());
+  }
+  std::stable_sort(result.bricks.begin(), result.bricks.end(),
+                   [](const ScheduledBrick& a, const ScheduledBrick& b) { return a.at < b.at; });
+  *scene = std::move(result);
+  return Status::success();
+}
+
+Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
+                 const BrickTypeLibrary& types, Scene* scene) {
+  if (name_or_path.empty()) return Status::error("no scene given");
+  std::string path;
+  if (isFile(name_or_path)) {
+    path = name_or_path;
+  } else {
+    for (const std::string& dir : scene_dirs) {
+      const std::string candidate = dir + "/" + name_or_path + ".yaml";
+      if (isFile(candidate)) {
+        path = candidate;
+        break;
+      }
+    }
+  }
+  if (path.empty()) {
+    std::string searched;
+    for (const std::string& dir : scene_dirs) searched += (searched.empty() ? "" : ", ") + dir;
+    return Status::error("unknown scene '" + name_or_path + "': no such file, and no " +
+                         name_or_path + ".yaml in [" + searched + "]");
+  }
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parseScene(text.str(), stem(path), types, scene);
+}
+
+}  // namespace brick_stack_sim
