@@ -7,6 +7,7 @@
 #include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/ros/node.h"
 #include "brick_stack_sim/ros/node_options.h"
+#include "brick_stack_sim/ros/xmlrpc_parameters.h"
 
 using namespace brick_stack_sim;
 
@@ -14,17 +15,19 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "brick_sim");
   ros::NodeHandle private_node_handle("~");
   ros_adapter::NodeOptions options;
+  ParameterValue parameters;
   BrickTypeLibrary types;
   std::unique_ptr<ros_adapter::SimNode> node;
-  Status status =
-      ros_adapter::loadNodeOptions(ros_adapter::RosParameterReader(private_node_handle), &options);
+  Status status = ros_adapter::readPrivateParameters(private_node_handle, &parameters);
+  if (status) status = ros_adapter::loadNodeOptions(parameters, &options);
   if (status)
     status = ros_adapter::resolveDataPaths(ros::package::getPath("brick_stack_sim"), &options);
+  const DataOptions& data = options.config.data;
   if (status) {
-    status = BrickTypeLibrary::load(options.types_urdf, options.materials_yaml, &types);
+    status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
     if (!status)
-      status.message = "brick types from ~types_urdf = '" + options.types_urdf +
-                       "', ~materials_yaml = '" + options.materials_yaml + "': " + status.message;
+      status.message = "brick types from ~types_urdf = '" + data.types_urdf +
+                       "', ~materials_yaml = '" + data.materials_yaml + "': " + status.message;
   }
   if (status) status = ros_adapter::SimNode::create(private_node_handle, options, types, &node);
   if (!status) {

@@ -23,10 +23,11 @@ int main(int argc, char** argv) {
   Scene scene;
   RunReport report;
   RunOptions options;
-  options.world = cli.world;
+  options.world = cli.config.world;
   options.duration = cli.duration;
-  Status status = BrickTypeLibrary::load(cli.types_urdf, cli.materials_yaml, &types);
-  if (status) status = loadScene(cli.scene, cli.scene_dirs, types, &scene);
+  const DataOptions& data = cli.config.data;
+  Status status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
+  if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene);
   if (status) status = runScene(scene, types, options, &report);
   if (!status) {
     std::cerr << "stack_sim_run: " << status.message << "\n";
@@ -42,9 +43,9 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "%s: mode %s, %.3f s simulated in %.3f s wall (real-time factor %.1f), %zu bricks, "
                "largest displacement %.3f mm, nonfinite %llu, refused %zu\n",
-               report.scene.c_str(), toString(report.world.mode), report.sim_time, report.wall_time,
-               report.sim_time / std::max(report.wall_time, 1e-9), report.bricks.size(),
-               report.maxDisplacement() * 1000.0,
+               report.scene.c_str(), report.world.stability.mode.c_str(), report.sim_time,
+               report.wall_time, report.sim_time / std::max(report.wall_time, 1e-9),
+               report.bricks.size(), report.maxDisplacement() * 1000.0,
                static_cast<unsigned long long>(report.cost.nonfinite), report.refused.size());
   return 0;
 }

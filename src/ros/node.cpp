@@ -35,11 +35,13 @@ std::string formatTime(double t) {
 
 Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
                        const BrickTypeLibrary& types, std::unique_ptr<SimNode>* node) {
-  if (Status valid = validate(options); !valid) return valid;
+  if (Status valid = validate(options.config.publish); !valid)
+    return prefixed("parameter ~", valid);
   if (types.empty()) return Status::error("no brick types: check ~types_urdf");
-  std::unique_ptr<SimNode> result(new SimNode(private_node_handle, options, types));
-  if (Status created = BrickWorld::create(options.world, types, &result->world_); !created)
-    return created;
+  std::unique_ptr<SimNode> result(new SimNode(private_node_handle, options));
+  if (Status created = Simulation::create(options.config.world, types, &result->simulation_);
+      !created)
+    return prefixed("parameter ~", created);
 
   SimNode& self = *result;
   ros::NodeHandle& nh = self.node_handle_;
@@ -50,14 +52,15 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(
       kMarkersTopic, 2,
       [&self](const ros::SingleSubscriberPublisher&) { self.state_dirty_ = true; });
-  if (options.publish_clock)
+  if (options.config.publish.clock)
     self.clock_publisher_ = nh.advertise<rosgraph_msgs::Clock>(kClockTopic, 10);
 
-  if (!options.initial_scene.empty()) {
+  const std::string& initial_scene = options.config.data.scene;
+  if (!initial_scene.empty()) {
     unsigned scheduled = 0;
     std::string message;
-    if (Status played = self.resetWorld(options.initial_scene, &scheduled, &message); !played)
-      return Status::error("parameter ~scene = '" + options.initial_scene + "': " + played.message);
+    if (Status played = self.resetWorld(initial_scene, &scheduled, &message); !played)
+      return Status::error("parameter ~scene = '" + initial_scene + "': " + played.message);
     ROS_INFO("%s", message.c_str());
   }
 
@@ -75,18 +78,18 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   ROS_INFO(
       "brick_sim: mode %s, time step %g s, %d iterations, real time factor %g%s, types: %zu "
       "(default %s)",
-      toString(options.world.mode), options.world.time_step, options.world.solver_iterations,
-      options.real_time_factor, options.real_time_factor == 0.0 ? " (as fast as possible)" : "",
+      options.config.world.stability.mode.c_str(), options.config.world.time_step,
+      options.config.world.solver_iterations, options.config.publish.real_time_factor,
+      options.config.publish.real_time_factor == 0.0 ? " (as fast as possible)" : "",
       types.names().size(), types.defaultType().c_str());
   *node = std::move(result);
   return Status::success();
 }
 
-SimNode::SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
-                 const BrickTypeLibrary& types)
-    : options_(options), types_(types), node_handle_(private_node_handle) {}
+SimNode::SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options)
+    : options_(options), node_handle_(private_node_handle) {}
 
-double SimNode::simTime() const { return time_offset_ + world_->time(); }
+double SimNode::simTime() const { return simulation_->time(); }
 
 // --- stepping ------------------------------------------------------------------
 
@@ -102,11 +105,11 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
     // are still answered when the world is too heavy for real time.
     const ros::WallTime deadline =
         start + ros::WallDuration(options_.max_step_budget / options_.step_timer_rate);
-    const double time_step = options_.world.time_step;
+    const double time_step = options_.config.world.time_step;
     double wanted = options_.max_steps_per_tick;
-    if (options_.real_time_factor > 0.0) {
-      const double target =
-          pacing_sim_start_ + (start - pacing_wall_start_).toSec() * options_.real_time_factor;
+    if (options_.config.publish.real_time_factor > 0.0) {
+      const double target = pacing_sim_start_ + (start - pacing_wall_start_).toSec() *
+                                                    options_.config.publish.real_time_factor;
       // The small epsilon keeps a step that is due "exactly now" from slipping
       // to the next tick through rounding.
       wanted = std::max(0.0, std::floor((target - simTime()) / time_step + 1e-6));
@@ -118,15 +121,16 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
       ++done;
       if (ros::WallTime::now() > deadline) break;
     }
-    const double lag = (wanted - done) * time_step / std::max(options_.real_time_factor, 1e-9);
-    if (options_.real_time_factor > 0.0 && lag > kMaxLag) {
+    const double lag =
+        (wanted - done) * time_step / std::max(options_.config.publish.real_time_factor, 1e-9);
+    if (options_.config.publish.real_time_factor > 0.0 && lag > kMaxLag) {
       // A late tick is made up by the next ones; a lag this long means the
       // world is too heavy, and catching up would only come back as a burst:
       // keep the pace from here on.
       ROS_WARN_THROTTLE(10.0,
                         "the world cannot keep up with real_time_factor %g (%.0f steps behind); "
                         "sim time runs slower than requested",
-                        options_.real_time_factor, wanted - done);
+                        options_.config.publish.real_time_factor, wanted - done);
       restartPacing();
     }
     if (done > 0) publishClock();
@@ -136,13 +140,13 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
 }
 
 void SimNode::stepOnce() {
-  world_->step();
-  if (!player_.done()) logRefusedPlacements(player_.placeDue(world_.get()));
+  simulation_->step();
+  logRefusedPlacements(simulation_->takeRefused());
   const double now = simTime();
   if (now + 1e-9 >= next_publish_time_) {
     publishClock();
     publishState();
-    const double period = 1.0 / options_.publish_rate;
+    const double period = 1.0 / options_.config.publish.rate;
     next_publish_time_ += period;
     if (next_publish_time_ <= now) next_publish_time_ = now + period;
   }
@@ -151,23 +155,23 @@ void SimNode::stepOnce() {
 // --- publishing ------------------------------------------------------------------
 
 ros::Time SimNode::stamp() const {
-  return options_.publish_clock ? ros::Time(simTime()) : ros::Time::now();
+  return options_.config.publish.clock ? ros::Time(simTime()) : ros::Time::now();
 }
 
 void SimNode::publishClock() {
-  if (!options_.publish_clock) return;
+  if (!options_.config.publish.clock) return;
   rosgraph_msgs::Clock clock;
   clock.clock = ros::Time(simTime());
   clock_publisher_.publish(clock);
 }
 
 void SimNode::publishEvents() {
-  for (const SimEvent& event : world_->takeEvents()) {
+  for (const SimEvent& event : simulation_->takeEvents()) {
     StabilityEvent msg = toMsg(event);
-    const double t = time_offset_ + event.time;
+    const double t = event.time;
     msg.header.stamp =
-        options_.publish_clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
-    msg.header.frame_id = options_.frame_id;
+        options_.config.publish.clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
+    msg.header.frame_id = options_.config.publish.frame_id;
     if (event.kind == SimEventKind::kNonFinite) {
       // NaN, Inf or a runaway speed: the reason says which and how it was repaired.
       ROS_WARN("brick %s at %s: %s", event.brick_id.c_str(), formatTime(t).c_str(),
@@ -180,11 +184,11 @@ void SimNode::publishEvents() {
 void SimNode::publishState() {
   state_dirty_ = false;
   const ros::Time now = stamp();
-  const std::vector<BrickSnapshot> bricks = world_->snapshot();
+  const std::vector<BrickSnapshot> bricks = simulation_->world().snapshot();
 
   BrickArray array;
   array.header.stamp = now;
-  array.header.frame_id = options_.frame_id;
+  array.header.frame_id = options_.config.publish.frame_id;
   array.bricks.reserve(bricks.size());
   std::vector<geometry_msgs::TransformStamped> transforms;
   transforms.reserve(bricks.size());
@@ -202,7 +206,7 @@ void SimNode::publishState() {
     if (tf_sent_at_last_stamp_.insert(brick.id).second) {
       geometry_msgs::TransformStamped transform;
       transform.header.stamp = now;
-      transform.header.frame_id = options_.frame_id;
+      transform.header.frame_id = options_.config.publish.frame_id;
       transform.child_frame_id = brick.id;
       transform.transform = toTransformMsg(brick.pose);
       transforms.push_back(transform);
@@ -221,17 +225,20 @@ void SimNode::publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros
   for (const BrickSnapshot& brick : bricks) {
     SupportGeometry geometry;
     // False in mode none and for bricks the model knows nothing of.
-    if (world_->supportGeometry(brick.id, &geometry)) supports.emplace(brick.id, geometry);
+    if (simulation_->world().supportGeometry(brick.id, &geometry))
+      supports.emplace(brick.id, geometry);
   }
   // In mode none there is nothing inside the bricks to see through them for.
-  const float alpha = options_.world.mode == StabilityMode::kNone ? 1.0f : kTranslucentBrickAlpha;
-  markers_publisher_.publish(makeMarkers(bricks, supports, options_.frame_id, stamp, alpha));
+  const float alpha =
+      options_.config.world.stability.mode == "none" ? 1.0f : kTranslucentBrickAlpha;
+  markers_publisher_.publish(
+      makeMarkers(bricks, supports, options_.config.publish.frame_id, stamp, alpha));
 }
 
 void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused) {
   for (const RefusedPlacement& placement : refused) {
     ROS_WARN("scene placement of %s at %s refused: %s", placement.id.c_str(),
-             formatTime(time_offset_ + placement.t).c_str(), placement.reason.c_str());
+             formatTime(placement.t).c_str(), placement.reason.c_str());
   }
 }
 
@@ -250,7 +257,7 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   if (Status converted = fromMsg(request, &placement); !converted)
     return refuse(kPlaceBrickService, converted, &response);
   std::string id;
-  if (Status added = world_->addBrick(placement, &id); !added)
+  if (Status added = simulation_->world().addBrick(placement, &id); !added)
     return refuse(kPlaceBrickService, added, &response);
   response.success = true;
   response.id = id;
@@ -261,7 +268,7 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
 }
 
 bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& response) {
-  if (Status removed = world_->removeBrick(request.id); !removed)
+  if (Status removed = simulation_->world().removeBrick(request.id); !removed)
     return refuse(kRemoveBrickService, removed, &response);
   response.success = true;
   response.message = "removed " + request.id;
@@ -272,35 +279,19 @@ bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& 
 
 Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
                            std::string* message) {
-  // Everything that can fail happens before the world is touched.
+  // Everything that can fail happens before the simulation is touched.
   Scene scene;
   if (!scene_name.empty()) {
-    if (Status loaded = loadScene(scene_name, options_.scene_dirs, types_, &scene); !loaded)
+    if (Status loaded =
+            loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), &scene);
+        !loaded)
       return loaded;
   }
-  const bool needs_own_world = scene.table.has_value() || !scene.types.empty();
-  std::unique_ptr<BrickWorld> replacement;
-  if (needs_own_world || scene_world_) {
-    WorldOptions world_options = options_.world;
-    if (scene.table) world_options.table = *scene.table;
-    BrickTypeLibrary types = types_;
-    if (Status merged = mergeSceneTypes(scene, &types); !merged)
-      return Status::error("scene '" + scene_name + "': " + merged.message);
-    if (Status created = BrickWorld::create(world_options, types, &replacement); !created)
-      return Status::error("scene '" + scene_name + "': " + created.message);
-  }
-
-  world_->clear();
-  publishEvents();  // the removed events, stamped in the old world's time
-  if (replacement) {
-    time_offset_ += world_->time();
-    world_ = std::move(replacement);
-    scene_world_ = needs_own_world;
-  }
-  player_ = ScenePlayer(scene.bricks, world_->time());
-  const std::vector<RefusedPlacement> refused = player_.placeDue(world_.get());
+  if (Status reset = simulation_->reset(scene); !reset)
+    return Status::error("scene '" + scene_name + "': " + reset.message);
+  publishEvents();  // the removed events, then the new scene's first placements
+  const std::vector<RefusedPlacement> refused = simulation_->takeRefused();
   logRefusedPlacements(refused);
-  publishEvents();
   state_dirty_ = true;
   next_publish_time_ = simTime();
   restartPacing();
@@ -332,9 +323,9 @@ bool SimNode::reset(ResetScene::Request& request, ResetScene::Response& response
 
 bool SimNode::getBricks(GetBricks::Request& /*request*/, GetBricks::Response& response) {
   response.header.stamp = stamp();
-  response.header.frame_id = options_.frame_id;
+  response.header.frame_id = options_.config.publish.frame_id;
   std::size_t left_out = 0;
-  for (const BrickSnapshot& brick : world_->snapshot()) {
+  for (const BrickSnapshot& brick : simulation_->world().snapshot()) {
     Brick msg;
     if (Status converted = toMsg(brick, &msg); !converted) {
       ROS_WARN_THROTTLE(5.0, "not published: %s", converted.message.c_str());
@@ -354,7 +345,7 @@ bool SimNode::pushBrick(PushBrick::Request& request, PushBrick::Response& respon
   Eigen::Vector3d point;
   if (Status converted = fromMsg(request, &impulse, &point); !converted)
     return refuse(kPushBrickService, converted, &response);
-  if (Status pushed = world_->applyImpulse(request.id, impulse, point); !pushed)
+  if (Status pushed = simulation_->world().applyImpulse(request.id, impulse, point); !pushed)
     return refuse(kPushBrickService, pushed, &response);
   response.success = true;
   response.message = "pushed " + request.id;

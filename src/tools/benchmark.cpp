@@ -7,9 +7,10 @@
 #include <map>
 #include <sstream>
 
+#include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/scene/generators.h"
-#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/stability/stability_modes.h"
 
 namespace brick_stack_sim {
 
@@ -26,7 +27,8 @@ std::vector<BenchSetting> settingsFor(const std::vector<std::string>& modes,
     for (const auto& [time_step, iterations] : steps) {
       BenchSetting s;
       s.mode_label = mode;
-      s.mode = mode == "com" ? StabilityMode::kCom : StabilityMode::kNone;
+      // Plain Bullet runs twice, with and without its own sleeping.
+      s.mode = mode.rfind("none", 0) == 0 ? "none" : mode;
       s.sleeping = mode != "none_nosleep";
       s.time_step = time_step;
       s.iterations = iterations;
@@ -36,7 +38,23 @@ std::vector<BenchSetting> settingsFor(const std::vector<std::string>& modes,
   return settings;
 }
 
-const std::vector<std::string> kAllModes = {"none_nosleep", "none_sleep", "com"};
+/// The modes of the registry as benchmark labels: every model, after plain
+/// Bullet without (when `nosleep`) and with its own sleeping. A mode added to
+/// the registry is benchmarked without a change here.
+std::vector<std::string> modeLabels(bool plain_bullet, bool nosleep) {
+  std::vector<std::string> labels;
+  if (plain_bullet && nosleep) labels.push_back("none_nosleep");
+  if (plain_bullet) labels.push_back("none_sleep");
+  for (const std::string& mode : availableStabilityModes())
+    if (mode != "none") labels.push_back(mode);
+  return labels;
+}
+
+std::vector<std::string> allModes() { return modeLabels(true, true); }
+/// Drops: plain Bullet without sleeping would only add minutes.
+std::vector<std::string> sleepingModes() { return modeLabels(true, false); }
+/// Cases that measure what a model skips: plain Bullet has nothing to skip.
+std::vector<std::string> modelModes() { return modeLabels(false, false); }
 
 BenchCase makeCase(const std::string& label, const std::string& scene, BenchMetric metric,
                    double duration, std::vector<BenchSetting> settings) {
@@ -82,8 +100,8 @@ bool fallen(const BrickSnapshot& b) {
 
 RunOptions optionsFor(const BenchSetting& setting, double duration) {
   RunOptions options;
-  options.world.mode = setting.mode;
-  options.world.sleeping = setting.sleeping;
+  options.world.stability.mode = setting.mode;
+  options.world.sleeping.enabled = setting.sleeping;
   options.world.time_step = setting.time_step;
   options.world.solver_iterations = setting.iterations;
   options.duration = duration;
@@ -163,7 +181,7 @@ int slantTowerCollapseLayer(double offset, double length) {
 
 BenchPlan quickBenchPlan() {
   const auto settings =
-      settingsFor(kAllModes, {{1.0 / 240, 20}, {1.0 / 1000, 20}, {1.0 / 1000, 10}});
+      settingsFor(allModes(), {{1.0 / 240, 20}, {1.0 / 1000, 20}, {1.0 / 1000, 10}});
   BenchPlan plan;
   plan.cases.push_back(makeCase("tower25", "tower25", BenchMetric::kSettled, 10.0, settings));
   BenchCase harmonic = makeCase("harmonic10", "", BenchMetric::kHarmonic, 3.0, settings);
@@ -171,12 +189,12 @@ BenchPlan quickBenchPlan() {
   BenchCase slant = makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, settings);
   plan.cases.push_back(slant);
   plan.cases.push_back(makeCase("pile200", "pile200", BenchMetric::kDrop, 1.0,
-                                settingsFor({"none_sleep", "com"}, {{1.0 / 1000, 20}})));
+                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
-                                settingsFor({"none_sleep", "com"}, {{1.0 / 1000, 20}})));
-  const auto com_only = settingsFor({"com"}, {{1.0 / 1000, 20}});
+                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  const auto model_only = settingsFor(modelModes(), {{1.0 / 1000, 20}});
   for (const char* scene : {"moving10", "settled2000_moving10"}) {
-    plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, com_only));
+    plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));
     plan.cases.back().repeats = 5;
   }
   return plan;
@@ -185,16 +203,16 @@ BenchPlan quickBenchPlan() {
 BenchPlan fullBenchPlan() {
   // Every setting where a run is cheap; the large plain-Bullet scenes, which
   // cost minutes per run, at the default setting and the step sweep only.
-  const auto sweep = settingsFor(kAllModes, {{1.0 / 60, 20},
-                                             {1.0 / 240, 20},
-                                             {1.0 / 1000, 20},
-                                             {1.0 / 2000, 20},
-                                             {1.0 / 1000, 5},
-                                             {1.0 / 1000, 10},
-                                             {1.0 / 1000, 50},
-                                             {1.0 / 1000, 100}});
-  const auto steps = settingsFor(kAllModes, {{1.0 / 240, 20}, {1.0 / 1000, 20}});
-  const auto defaults = settingsFor(kAllModes, {{1.0 / 1000, 20}});
+  const auto sweep = settingsFor(allModes(), {{1.0 / 60, 20},
+                                              {1.0 / 240, 20},
+                                              {1.0 / 1000, 20},
+                                              {1.0 / 2000, 20},
+                                              {1.0 / 1000, 5},
+                                              {1.0 / 1000, 10},
+                                              {1.0 / 1000, 50},
+                                              {1.0 / 1000, 100}});
+  const auto steps = settingsFor(allModes(), {{1.0 / 240, 20}, {1.0 / 1000, 20}});
+  const auto defaults = settingsFor(allModes(), {{1.0 / 1000, 20}});
   BenchPlan plan;
   plan.divergence = true;
   plan.cases.push_back(makeCase("tower25", "tower25", BenchMetric::kSettled, 30.0, sweep));
@@ -202,16 +220,16 @@ BenchPlan fullBenchPlan() {
   plan.cases.push_back(makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, sweep));
   plan.cases.push_back(makeCase("pile200", "pile200", BenchMetric::kDrop, 3.0, steps));
   plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
-                                settingsFor({"none_sleep", "com"}, {{1.0 / 1000, 20}})));
+                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   plan.cases.push_back(makeCase("tower100", "tower100", BenchMetric::kSettled, 30.0, steps));
   plan.cases.push_back(makeCase("pyramid210", "pyramid210", BenchMetric::kSettled, 30.0, defaults));
   plan.cases.push_back(makeCase("pile1000", "pile1000", BenchMetric::kDrop, 3.0,
-                                settingsFor({"none_sleep", "com"}, {{1.0 / 1000, 20}})));
+                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   for (const char* tower : {"tower10", "tower50"})
     plan.cases.push_back(makeCase(tower, tower, BenchMetric::kSettled, 30.0, defaults));
-  const auto com_only = settingsFor({"com"}, {{1.0 / 1000, 20}});
+  const auto model_only = settingsFor(modelModes(), {{1.0 / 1000, 20}});
   for (const char* scene : {"moving10", "settled2000_moving10"}) {
-    plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, com_only));
+    plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));
     plan.cases.back().repeats = 5;
   }
   return plan;

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
+
+#include "brick_stack_sim/core/stability/stability_modes.h"
 
 namespace brick_stack_sim {
 
@@ -25,13 +28,25 @@ Status parseInt(const std::string& flag, const std::string& text, int* value) {
   return Status::success();
 }
 
+std::string modeList() {
+  std::string text;
+  for (const std::string& mode : availableStabilityModes())
+    text += (text.empty() ? "" : ", ") + mode;
+  return text;
+}
+
 }  // namespace
 
 std::string runUsage() {
-  return "usage: stack_sim_run --scene FILE|NAME [options]\n"
+  return "usage: stack_sim_run [--config YAML]... [--scene FILE|NAME] [options]\n"
          "Runs a scene with no ROS master and writes a JSON report.\n"
+         "  --config YAML       the node's parameters (config/sim.yaml, config/stability.yaml);\n"
+         "                      repeatable, later files override earlier ones key by key\n"
          "  --scene FILE|NAME   scene yaml, or a name from the scene directories\n"
-         "  --mode MODE         stability model: none (default), com, equilibrium\n"
+         "                      (default: the config's `scene`)\n"
+         "  --mode MODE         stability model: " +
+         modeList() +
+         " (default: com)\n"
          "  --duration S        simulated time [s] (default: last placement + 5 s)\n"
          "  --time-step S       fixed step [s] (default 0.001)\n"
          "  --iterations N      solver iterations per step (default 20)\n"
@@ -40,12 +55,19 @@ std::string runUsage() {
          "  --types URDF        brick types (default: the package's urdf/bricks.urdf)\n"
          "  --materials YAML    friction and restitution per type (default: config/bricks.yaml)\n"
          "  --scene-dir DIR     where scene names are looked up (repeatable; default scenes/)\n"
-         "  --help              this text\n";
+         "  --help              this text\n"
+         "Flags override the config files; bad values are refused with their name.\n";
 }
 
 Status parseRunCommandLine(const std::vector<std::string>& args, const std::string& data_dir,
                            RunCommandLine* command_line) {
   RunCommandLine result;
+  // Flags are applied after the config files, whatever their order.
+  std::vector<std::pair<std::string, std::string>> overrides;
+  bool no_sleep = false;
+  static const std::set<std::string> kWithValue = {
+      "--config",     "--scene",  "--mode",  "--duration",  "--time-step",
+      "--iterations", "--report", "--types", "--materials", "--scene-dir"};
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") {
@@ -53,52 +75,67 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
       continue;
     }
     if (flag == "--no-sleep") {
-      result.world.sleeping = false;
+      no_sleep = true;
       continue;
     }
     if (flag.rfind("--", 0) != 0) return Status::error("unexpected argument '" + flag + "'");
-    static const char* kWithValue[] = {"--scene",     "--mode",       "--duration",
-                                       "--time-step", "--iterations", "--report",
-                                       "--types",     "--materials",  "--scene-dir"};
-    bool known = false;
-    for (const char* candidate : kWithValue) known = known || flag == candidate;
-    if (!known) return Status::error("unknown option '" + flag + "' (see --help)");
+    if (!kWithValue.count(flag)) return Status::error("unknown option '" + flag + "' (see --help)");
     if (i + 1 >= args.size()) return Status::error(flag + " needs a value");
     const std::string& value = args[++i];
+    if (flag == "--config") {
+      result.config_files.push_back(value);
+    } else {
+      overrides.emplace_back(flag, value);
+    }
+  }
+  if (result.help) {
+    *command_line = result;
+    return Status::success();
+  }
+  if (!result.config_files.empty()) {
+    if (Status loaded = loadSimulationConfig(result.config_files, &result.config); !loaded)
+      return loaded;
+  }
+  WorldOptions& world = result.config.world;
+  DataOptions& data = result.config.data;
+  bool scene_dirs_given = false;
+  if (no_sleep) world.sleeping.enabled = false;
+  for (const auto& [flag, value] : overrides) {
     Status parsed;
     if (flag == "--scene") {
-      result.scene = value;
+      data.scene = value;
     } else if (flag == "--mode") {
-      parsed = parseStabilityMode(value, &result.world.mode);
+      world.stability.mode = value;
+      parsed = checkStabilityMode(value);
     } else if (flag == "--duration") {
       double duration = 0.0;
       parsed = parseDouble(flag, value, &duration);
       if (parsed && duration < 0.0) parsed = Status::error("--duration must be >= 0 s");
       result.duration = duration;
     } else if (flag == "--time-step") {
-      parsed = parseDouble(flag, value, &result.world.time_step);
+      parsed = parseDouble(flag, value, &world.time_step);
     } else if (flag == "--iterations") {
-      parsed = parseInt(flag, value, &result.world.solver_iterations);
+      parsed = parseInt(flag, value, &world.solver_iterations);
     } else if (flag == "--report") {
       result.report_path = value;
     } else if (flag == "--types") {
-      result.types_urdf = value;
+      data.types_urdf = value;
     } else if (flag == "--materials") {
-      result.materials_yaml = value;
+      data.materials_yaml = value;
     } else if (flag == "--scene-dir") {
-      result.scene_dirs.push_back(value);
+      // The flags replace the config's directories rather than add to them.
+      if (!scene_dirs_given) data.scene_dirs.clear();
+      scene_dirs_given = true;
+      data.scene_dirs.push_back(value);
     }
     if (!parsed) return parsed;
   }
-  if (result.help) {
-    *command_line = result;
-    return Status::success();
-  }
-  if (result.scene.empty()) return Status::error("--scene is required (see --help)");
-  if (result.types_urdf.empty()) result.types_urdf = data_dir + "/urdf/bricks.urdf";
-  if (result.materials_yaml.empty()) result.materials_yaml = data_dir + "/config/bricks.yaml";
-  if (result.scene_dirs.empty()) result.scene_dirs.push_back(data_dir + "/scenes");
-  if (Status valid = validate(result.world); !valid) {
+  if (data.scene.empty())
+    return Status::error("--scene is required (or a config with `scene`; see --help)");
+  if (data.types_urdf.empty()) data.types_urdf = data_dir + "/urdf/bricks.urdf";
+  if (data.materials_yaml.empty()) data.materials_yaml = data_dir + "/config/bricks.yaml";
+  if (data.scene_dirs.empty()) data.scene_dirs.push_back(data_dir + "/scenes");
+  if (Status valid = validate(world); !valid) {
     valid.message = "bad setting: " + valid.message;
     return valid;
   }

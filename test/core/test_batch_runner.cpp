@@ -28,6 +28,7 @@ std::string withoutWallTime(std::string json) {
 
 TEST(BatchRunner, ReportHasTheContractKeys) {
   RunOptions options;
+  options.world.stability.mode = "none";  // a brick in plain Bullet: dynamic, awake every step
   options.duration = 0.2;
   RunReport report;
   ASSERT_TRUE(runScene(loadPackageScene("single_drop"), test::packageTypes(), options, &report).ok);
@@ -73,7 +74,7 @@ TEST(BatchRunner, SameSceneTwiceGivesTheSameReport) {
   Scene scene = loadPackageScene("tower10");
   RunOptions options;
   options.duration = 1.0;
-  options.world.sleeping = false;
+  options.world.sleeping.enabled = false;
   RunReport first, second;
   ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &first).ok);
   ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &second).ok);
@@ -104,14 +105,116 @@ TEST(RunCommandLine, ParsesTheDocumentedFlags) {
        "--iterations", "30", "--no-sleep", "--report", "out.json"},
       "/pkg", &cli);
   ASSERT_TRUE(s.ok) << s.message;
-  EXPECT_EQ(cli.scene, "tower10");
+  EXPECT_EQ(cli.config.data.scene, "tower10");
   EXPECT_DOUBLE_EQ(*cli.duration, 20.0);
-  EXPECT_DOUBLE_EQ(cli.world.time_step, 0.002);
-  EXPECT_EQ(cli.world.solver_iterations, 30);
-  EXPECT_FALSE(cli.world.sleeping);
+  EXPECT_DOUBLE_EQ(cli.config.world.time_step, 0.002);
+  EXPECT_EQ(cli.config.world.solver_iterations, 30);
+  EXPECT_EQ(cli.config.world.stability.mode, "none");
+  EXPECT_FALSE(cli.config.world.sleeping.enabled);
   EXPECT_EQ(cli.report_path, "out.json");
-  EXPECT_EQ(cli.types_urdf, "/pkg/urdf/bricks.urdf");
-  EXPECT_EQ(cli.scene_dirs, std::vector<std::string>{"/pkg/scenes"});
+  EXPECT_EQ(cli.config.data.types_urdf, "/pkg/urdf/bricks.urdf");
+  EXPECT_EQ(cli.config.data.scene_dirs, std::vector<std::string>{"/pkg/scenes"});
+}
+
+TEST(RunCommandLine, DefaultModeIsTheNodesAndTheConfigFilesSayNothingElse) {
+  // The node starts from the same SimulationConfig defaults, and its launch
+  // files load config/sim.yaml and config/stability.yaml, which claim to hold
+  // the built-in defaults: loading them must change no option.
+  RunCommandLine bare, configured;
+  ASSERT_TRUE(parseRunCommandLine({"--scene", "x"}, "/pkg", &bare).ok);
+  EXPECT_EQ(bare.config.world.stability.mode, "com");
+  const Status s = parseRunCommandLine({"--config", test::dataPath("config/sim.yaml"), "--config",
+                                        test::dataPath("config/stability.yaml"), "--scene", "x"},
+                                       "/pkg", &configured);
+  ASSERT_TRUE(s.ok) << s.message;
+  const WorldOptions &a = bare.config.world, &b = configured.config.world;
+  EXPECT_EQ(a.stability.mode, b.stability.mode);
+  EXPECT_EQ(a.time_step, b.time_step);
+  EXPECT_EQ(a.solver_iterations, b.solver_iterations);
+  EXPECT_EQ(a.gravity, b.gravity);
+  EXPECT_EQ(a.sleeping.enabled, b.sleeping.enabled);
+  EXPECT_EQ(a.sleeping.linear_threshold, b.sleeping.linear_threshold);
+  EXPECT_EQ(a.sleeping.angular_threshold, b.sleeping.angular_threshold);
+  EXPECT_EQ(a.sleeping.time, b.sleeping.time);
+  EXPECT_EQ(a.split_impulse_penetration_threshold, b.split_impulse_penetration_threshold);
+  EXPECT_EQ(a.erp, b.erp);
+  EXPECT_EQ(a.collision_margin, b.collision_margin);
+  EXPECT_EQ(a.overlap_tolerance, b.overlap_tolerance);
+  EXPECT_EQ(a.fall_off_depth, b.fall_off_depth);
+  EXPECT_EQ(a.max_linear_speed, b.max_linear_speed);
+  EXPECT_EQ(a.max_angular_speed, b.max_angular_speed);
+  EXPECT_EQ(a.table.size, b.table.size);
+  EXPECT_EQ(a.table.thickness, b.table.thickness);
+  EXPECT_EQ(a.table.height, b.table.height);
+  EXPECT_EQ(a.table.friction, b.table.friction);
+  EXPECT_EQ(a.table.restitution, b.table.restitution);
+  EXPECT_EQ(a.stability.rest_linear_speed, b.stability.rest_linear_speed);
+  EXPECT_EQ(a.stability.rest_angular_speed, b.stability.rest_angular_speed);
+  EXPECT_EQ(a.stability.rest_time, b.stability.rest_time);
+  EXPECT_EQ(a.stability.impact_speed, b.stability.impact_speed);
+  EXPECT_EQ(a.stability.support_normal_tolerance, b.stability.support_normal_tolerance);
+  EXPECT_EQ(a.stability.flush_angle, b.stability.flush_angle);
+  EXPECT_EQ(a.stability.contact_distance, b.stability.contact_distance);
+  EXPECT_EQ(a.stability.min_margin, b.stability.min_margin);
+  const PublishOptions &p = bare.config.publish, &q = configured.config.publish;
+  EXPECT_EQ(p.rate, q.rate);
+  EXPECT_EQ(p.clock, q.clock);
+  EXPECT_EQ(p.real_time_factor, q.real_time_factor);
+  EXPECT_EQ(p.frame_id, q.frame_id);
+  EXPECT_EQ(configured.config.data.scene, "x");
+}
+
+/// Writes `text` to a yaml file in the test's temporary directory.
+std::string writeYaml(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(RunCommandLine, ConfigFilesThenFlags) {
+  const std::string config = writeYaml("run_config.yaml",
+                                       "time_step: 0.002\nstability: {mode: none}\n"
+                                       "sleeping: {enabled: false}\nscene: tower10\n");
+  RunCommandLine cli;
+  Status s = parseRunCommandLine({"--config", config}, "/pkg", &cli);
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_EQ(cli.config.world.time_step, 0.002);
+  EXPECT_EQ(cli.config.world.stability.mode, "none");
+  EXPECT_FALSE(cli.config.world.sleeping.enabled);
+  EXPECT_EQ(cli.config.data.scene, "tower10");  // no --scene needed
+  // Flags win over the file, wherever they stand.
+  s = parseRunCommandLine({"--mode", "com", "--config", config, "--time-step", "0.003"}, "/pkg",
+                          &cli);
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_EQ(cli.config.world.stability.mode, "com");
+  EXPECT_EQ(cli.config.world.time_step, 0.003);
+}
+
+TEST(RunCommandLine, ConfigTyposAndBadValuesAreNamedWithTheFile) {
+  const std::string typo = writeYaml("typo.yaml", "time_stepp: 0.002\n");
+  const std::string nested = writeYaml("nested.yaml", "stability: {rest_tme: 0.1}\n");
+  const std::string bad = writeYaml("bad.yaml", "table: {size: [1.0, -2.0]}\n");
+  const std::string wrong_type = writeYaml("wrong_type.yaml", "solver_iterations: many\n");
+  struct Case {
+    std::string file;
+    std::vector<std::string> expected;
+  };
+  const Case cases[] = {
+      {typo, {typo, "time_stepp", "not a known parameter"}},
+      {nested, {"stability/rest_tme", "not a known parameter"}},
+      {bad, {"table/size = -2"}},
+      {wrong_type, {"solver_iterations", "many"}},
+      {"/nonexistent/config.yaml", {"/nonexistent/config.yaml"}},
+  };
+  for (const Case& c : cases) {
+    RunCommandLine cli;
+    cli.config.world.time_step = 0.005;  // a marker: a refusal changes nothing
+    const Status s = parseRunCommandLine({"--config", c.file, "--scene", "x"}, "/pkg", &cli);
+    EXPECT_FALSE(s.ok) << c.file;
+    for (const std::string& word : c.expected)
+      EXPECT_NE(s.message.find(word), std::string::npos) << s.message;
+    EXPECT_EQ(cli.config.world.time_step, 0.005);
+  }
 }
 
 TEST(RunCommandLine, BadFlagsAreNamed) {
@@ -129,6 +232,7 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
       {{"--scene", "x", "--iterations", "0"}, "solver_iterations"},
       {{"--scene", "x", "--mode", "magic"}, "magic"},
       {{"--scene", "x", "--mode", "equilibrium"}, "not available"},
+      {{"--scene", "x", "--config"}, "--config needs a value"},
       {{"--scene", "x", "--duration", "-3"}, "--duration"},
       {{"--mode", "none"}, "--scene is required"},
       {{"tower10"}, "unexpected argument"},

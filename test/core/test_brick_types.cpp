@@ -1,3 +1,6 @@
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/brick_type.h"
@@ -71,6 +74,16 @@ TEST(BrickTypes, BadDescriptionsAreRefusedWithAReason) {
   s = BrickTypeLibrary::parse(zero_mass, "", &types);
   EXPECT_FALSE(s.ok);
   EXPECT_NE(s.message.find("mass"), std::string::npos) << s.message;
+  // A typo in the materials is named with its place, never silently ignored.
+  for (const auto& [yaml, name] : std::vector<std::pair<std::string, std::string>>{
+           {"default: {frction: 0.3}", "default/frction"},
+           {"types: {slab: {restitusion: 0.1}}", "types/slab/restitusion"},
+           {"defualt_type: slab", "defualt_type"},
+           {"types: [slab]", "types"}}) {
+    s = BrickTypeLibrary::parse(kOneBrickUrdf, yaml, &types);
+    EXPECT_FALSE(s.ok) << yaml;
+    EXPECT_NE(s.message.find(name), std::string::npos) << s.message;
+  }
   s = BrickTypeLibrary::load("/nonexistent/bricks.urdf", "", &types);
   EXPECT_FALSE(s.ok);
   EXPECT_NE(s.message.find("/nonexistent/bricks.urdf"), std::string::npos) << s.message;

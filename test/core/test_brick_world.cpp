@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/world/simulation.h"
+
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "test_support.h"
 
@@ -87,23 +89,29 @@ TEST(BrickWorld, RemovingTheLowerBrickWakesTheUpperOneWhichFalls) {
   EXPECT_FALSE(world->find("low", nullptr));
 }
 
-TEST(BrickWorld, ClearEmptiesTheTableButTimeGoesOn) {
-  auto world = makeWorld();
-  ASSERT_TRUE(world->addBrick(placement("a", {0, 0, 0.0039})).ok);
-  runFor(world.get(), 0.1);
-  const double before = world->time();
-  world->clear();
-  EXPECT_EQ(world->brickCount(), 0u);
-  EXPECT_DOUBLE_EQ(world->time(), before);
-  world->step();
-  EXPECT_GT(world->time(), before);
+TEST(Simulation, ResetEmptiesTheTableButTimeGoesOn) {
+  std::unique_ptr<Simulation> simulation;
+  ASSERT_TRUE(Simulation::create(test::plainBulletOptions(), test::packageTypes(), &simulation).ok);
+  ASSERT_TRUE(simulation->world().addBrick(placement("a", {0, 0, 0.0039})).ok);
+  for (int i = 0; i < 100; ++i) simulation->step();
+  const double before = simulation->time();
+  ASSERT_TRUE(simulation->reset(Scene()).ok);
+  EXPECT_EQ(simulation->world().brickCount(), 0u);
+  EXPECT_DOUBLE_EQ(simulation->time(), before);
+  const std::vector<SimEvent> events = simulation->takeEvents();
+  ASSERT_EQ(events.size(), 2u);  // spawned, then removed by the reset
+  EXPECT_EQ(events[1].kind, SimEventKind::kRemoved);
+  EXPECT_EQ(events[1].reason, "scene reset");
+  EXPECT_DOUBLE_EQ(events[1].time, before);
+  simulation->step();
+  EXPECT_GT(simulation->time(), before);
   std::string id;
-  ASSERT_TRUE(world->addBrick(placement("", {0, 0, 0.0039}), &id).ok);
+  ASSERT_TRUE(simulation->world().addBrick(placement("", {0, 0, 0.0039}), &id).ok);
   EXPECT_EQ(id, "brick_0");
 }
 
 TEST(BrickWorld, BrickPushedOffTheTableIsReportedAndLandsOnTheFloor) {
-  WorldOptions options;
+  WorldOptions options = test::plainBulletOptions();
   options.table.size = Eigen::Vector2d(0.3, 0.3);
   auto world = makeWorld(options);
   BrickPlacement p = placement("slider", {0.1, 0, 0.0039});
@@ -122,7 +130,7 @@ TEST(BrickWorld, BrickPushedOffTheTableIsReportedAndLandsOnTheFloor) {
 }
 
 TEST(BrickWorld, ImpulseMovesTheBrickByMomentum) {
-  WorldOptions options;
+  WorldOptions options = test::plainBulletOptions();
   options.gravity = 0.0;  // free flight: momentum is all there is
   auto world = makeWorld(options);
   ASSERT_TRUE(world->addBrick(placement("b", {0, 0, 0.1})).ok);

@@ -24,7 +24,7 @@ using test::runFor;
 
 WorldOptions comOptions() {
   WorldOptions options;
-  options.mode = StabilityMode::kCom;
+  options.stability.mode = "com";
   return options;
 }
 

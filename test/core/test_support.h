@@ -26,7 +26,14 @@ inline BrickTypeLibrary packageTypes() {
   return types;
 }
 
-inline std::unique_ptr<BrickWorld> makeWorld(const WorldOptions& options = WorldOptions()) {
+/// Plain Bullet: the world the tests of the world itself run in.
+inline WorldOptions plainBulletOptions() {
+  WorldOptions options;
+  options.stability.mode = "none";
+  return options;
+}
+
+inline std::unique_ptr<BrickWorld> makeWorld(const WorldOptions& options = plainBulletOptions()) {
   std::unique_ptr<BrickWorld> world;
   const Status created = BrickWorld::create(options, packageTypes(), &world);
   EXPECT_TRUE(created.ok) << created.message;

@@ -75,6 +75,14 @@ class BadParameters(unittest.TestCase):
     def test_missing_urdf(self):
         self.check_refused(["_types_urdf:=/nonexistent/bricks.urdf"], "/nonexistent/bricks.urdf")
 
+    def test_misspelt_parameter(self):
+        # A typo must stop the node, not silently leave the default in place.
+        self.check_refused(["_time_stepp:=0.002"], "~time_stepp", "not a known parameter")
+
+    def test_misspelt_nested_parameter(self):
+        self.check_refused(["_stability/rest_tme:=0.1"], "~stability/rest_tme",
+                           "not a known parameter")
+
     def test_unknown_initial_scene(self):
         self.check_refused(["_scene:=no_such_scene_5678"], "~scene", "no_such_scene_5678")
 

@@ -30,7 +30,7 @@ inline std::unique_ptr<BrickWorld> makeComWorld() {
       BrickTypeLibrary::load(dir + "/urdf/bricks.urdf", dir + "/config/bricks.yaml", &types);
   EXPECT_TRUE(loaded.ok) << loaded.message;
   WorldOptions options;
-  options.mode = StabilityMode::kCom;
+  options.stability.mode = "com";
   std::unique_ptr<BrickWorld> world;
   const Status created = BrickWorld::create(options, types, &world);
   EXPECT_TRUE(created.ok) << created.message;

@@ -1,12 +1,16 @@
-// Parameters -> NodeOptions with no master: a map stands in for the parameter
-// server, holding the same XML-RPC values the node would read.
+// Parameters -> NodeOptions with no master: XML-RPC values, as the parameter
+// server holds them, go through the same conversion (fromXmlRpc) and the same
+// core readers the node uses.
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/stability/stability_modes.h"
 #include "brick_stack_sim/ros/node_options.h"
+#include "brick_stack_sim/ros/xmlrpc_parameters.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -22,32 +26,55 @@ XmlRpcValue list(std::initializer_list<XmlRpcValue> items) {
   return value;
 }
 
+/// The private namespace as the parameter server returns it: "table/size"
+/// is member "size" of the struct "table".
+class PrivateParameters {
+ public:
+  void set(const std::string& path, const XmlRpcValue& value) {
+    XmlRpcValue* node = &root_;
+    std::size_t start = 0;
+    for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)
+      node = &(*node)[path.substr(start, slash - start)];
+    (*node)[path.substr(start)] = value;
+  }
+  Status load(NodeOptions* options) const {
+    ParameterValue tree;
+    if (root_.getType() == XmlRpcValue::TypeStruct) {
+      if (Status converted = fromXmlRpc(root_, "~", &tree); !converted) return converted;
+    }
+    return loadNodeOptions(tree, options);
+  }
+
+ private:
+  XmlRpcValue root_;
+};
+
 /// Loads `name` = `value` on top of the defaults and expects a refusal that
 /// names the parameter; returns the message for further checks.
 std::string expectRefused(const std::string& name, const XmlRpcValue& value) {
-  MapParameterReader params;
+  PrivateParameters params;
   params.set(name, value);
   NodeOptions options;
-  options.publish_rate = 12.5;  // a marker: a refusal must leave the options alone
-  const Status status = loadNodeOptions(params, &options);
+  options.config.publish.rate = 12.5;  // a marker: a refusal must leave the options alone
+  const Status status = params.load(&options);
   EXPECT_FALSE(status.ok) << name << " was accepted";
   EXPECT_NE(status.message.find("~" + name), std::string::npos)
       << "message does not name ~" << name << ": " << status.message;
-  EXPECT_EQ(options.publish_rate, 12.5) << "options changed by a refused load";
+  EXPECT_EQ(options.config.publish.rate, 12.5) << "options changed by a refused load";
   return status.message;
 }
 
 TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
-  MapParameterReader params;
+  PrivateParameters params;
   NodeOptions options;
-  const Status status = loadNodeOptions(params, &options);
+  const Status status = params.load(&options);
   ASSERT_TRUE(status.ok) << status.message;
   const WorldOptions defaults;
-  EXPECT_EQ(options.world.time_step, defaults.time_step);
-  EXPECT_EQ(options.world.solver_iterations, defaults.solver_iterations);
+  EXPECT_EQ(options.config.world.time_step, defaults.time_step);
+  EXPECT_EQ(options.config.world.solver_iterations, defaults.solver_iterations);
   // The node runs the stack stability layer unless told otherwise.
-  EXPECT_EQ(options.world.mode, StabilityMode::kCom);
-  const StabilityOptions& stability = options.world.stability;
+  EXPECT_EQ(options.config.world.stability.mode, "com");
+  const StabilityOptions& stability = options.config.world.stability;
   EXPECT_EQ(stability.rest_linear_speed, defaults.stability.rest_linear_speed);
   EXPECT_EQ(stability.rest_angular_speed, defaults.stability.rest_angular_speed);
   EXPECT_EQ(stability.rest_time, defaults.stability.rest_time);
@@ -56,14 +83,15 @@ TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
   EXPECT_EQ(stability.flush_angle, defaults.stability.flush_angle);
   EXPECT_EQ(stability.contact_distance, defaults.stability.contact_distance);
   EXPECT_EQ(stability.min_margin, defaults.stability.min_margin);
-  EXPECT_EQ(options.world.table.size, defaults.table.size);
-  EXPECT_EQ(options.frame_id, "world");
-  EXPECT_TRUE(options.scene_dirs.empty());
-  EXPECT_TRUE(validate(options).ok);
+  EXPECT_EQ(options.config.world.table.size, defaults.table.size);
+  EXPECT_EQ(options.config.publish.frame_id, "world");
+  EXPECT_TRUE(options.config.data.scene_dirs.empty());
+  EXPECT_TRUE(validate(options.config.world).ok);
+  EXPECT_TRUE(validate(options.config.publish).ok);
 }
 
 TEST(NodeOptions, ReadsEveryParameter) {
-  MapParameterReader params;
+  PrivateParameters params;
   params.set("time_step", 0.002);
   params.set("solver_iterations", 30);
   params.set("gravity", 10);  // an int where a double is expected: YAML writes 10
@@ -96,17 +124,17 @@ TEST(NodeOptions, ReadsEveryParameter) {
   params.set("scene_dirs", list({XmlRpcValue(std::string("/a")), XmlRpcValue(std::string("/b"))}));
   params.set("scene", std::string("tower10"));
   NodeOptions options;
-  const Status status = loadNodeOptions(params, &options);
+  const Status status = params.load(&options);
   ASSERT_TRUE(status.ok) << status.message;
-  EXPECT_EQ(options.world.time_step, 0.002);
-  EXPECT_EQ(options.world.solver_iterations, 30);
-  EXPECT_EQ(options.world.gravity, 10.0);
-  EXPECT_EQ(options.publish_rate, 50.0);
-  EXPECT_TRUE(options.publish_clock);
-  EXPECT_EQ(options.real_time_factor, 0.0);
-  EXPECT_EQ(options.frame_id, "map");
-  EXPECT_EQ(options.world.mode, StabilityMode::kNone);
-  const StabilityOptions& stability = options.world.stability;
+  EXPECT_EQ(options.config.world.time_step, 0.002);
+  EXPECT_EQ(options.config.world.solver_iterations, 30);
+  EXPECT_EQ(options.config.world.gravity, 10.0);
+  EXPECT_EQ(options.config.publish.rate, 50.0);
+  EXPECT_TRUE(options.config.publish.clock);
+  EXPECT_EQ(options.config.publish.real_time_factor, 0.0);
+  EXPECT_EQ(options.config.publish.frame_id, "map");
+  EXPECT_EQ(options.config.world.stability.mode, "none");
+  const StabilityOptions& stability = options.config.world.stability;
   EXPECT_EQ(stability.rest_linear_speed, 0.004);
   EXPECT_EQ(stability.rest_angular_speed, 0.04);
   EXPECT_EQ(stability.rest_time, 0.05);
@@ -115,22 +143,22 @@ TEST(NodeOptions, ReadsEveryParameter) {
   EXPECT_EQ(stability.flush_angle, 0.003);
   EXPECT_EQ(stability.contact_distance, 0.0002);
   EXPECT_EQ(stability.min_margin, 0.0);
-  EXPECT_FALSE(options.world.sleeping);
-  EXPECT_EQ(options.world.linear_sleep_threshold, 0.01);
-  EXPECT_EQ(options.world.angular_sleep_threshold, 0.1);
-  EXPECT_EQ(options.world.deactivation_time, 1.5);
-  EXPECT_EQ(options.world.table.size, Eigen::Vector2d(2.0, 1.0));
-  EXPECT_EQ(options.world.table.thickness, 0.05);
-  EXPECT_EQ(options.world.table.height, 0.7);
-  EXPECT_EQ(options.world.table.friction, 0.6);
-  EXPECT_EQ(options.world.table.restitution, 0.1);
-  EXPECT_EQ(options.world.overlap_tolerance, 0.0002);
-  EXPECT_EQ(options.world.fall_off_depth, 0.05);
-  EXPECT_EQ(options.types_urdf, "/x/bricks.urdf");
-  EXPECT_EQ(options.materials_yaml, "/x/bricks.yaml");
-  ASSERT_EQ(options.scene_dirs.size(), 2u);
-  EXPECT_EQ(options.scene_dirs[1], "/b");
-  EXPECT_EQ(options.initial_scene, "tower10");
+  EXPECT_FALSE(options.config.world.sleeping.enabled);
+  EXPECT_EQ(options.config.world.sleeping.linear_threshold, 0.01);
+  EXPECT_EQ(options.config.world.sleeping.angular_threshold, 0.1);
+  EXPECT_EQ(options.config.world.sleeping.time, 1.5);
+  EXPECT_EQ(options.config.world.table.size, Eigen::Vector2d(2.0, 1.0));
+  EXPECT_EQ(options.config.world.table.thickness, 0.05);
+  EXPECT_EQ(options.config.world.table.height, 0.7);
+  EXPECT_EQ(options.config.world.table.friction, 0.6);
+  EXPECT_EQ(options.config.world.table.restitution, 0.1);
+  EXPECT_EQ(options.config.world.overlap_tolerance, 0.0002);
+  EXPECT_EQ(options.config.world.fall_off_depth, 0.05);
+  EXPECT_EQ(options.config.data.types_urdf, "/x/bricks.urdf");
+  EXPECT_EQ(options.config.data.materials_yaml, "/x/bricks.yaml");
+  ASSERT_EQ(options.config.data.scene_dirs.size(), 2u);
+  EXPECT_EQ(options.config.data.scene_dirs[1], "/b");
+  EXPECT_EQ(options.config.data.scene, "tower10");
 }
 
 TEST(NodeOptions, RefusesBadTimeStep) {
@@ -194,25 +222,25 @@ TEST(NodeOptions, RefusesBadStabilityThresholds) {
 
 TEST(NodeOptions, StabilityThresholdsAreCheckedInModeNone) {
   // A typo must not wait until someone switches the layer on.
-  MapParameterReader params;
+  PrivateParameters params;
   params.set("stability/mode", std::string("none"));
   params.set("stability/rest_time", -1.0);
   NodeOptions options;
-  const Status status = loadNodeOptions(params, &options);
+  const Status status = params.load(&options);
   EXPECT_FALSE(status.ok);
   EXPECT_NE(status.message.find("~stability/rest_time"), std::string::npos) << status.message;
 }
 
 TEST(NodeOptions, AcceptsBoundaryStabilityThresholds) {
-  MapParameterReader params;
+  PrivateParameters params;
   params.set("stability/rest_time", 0.0);    // at rest as soon as it is slow
   params.set("stability/flush_angle", 0.0);  // only exactly parallel faces are flush
   params.set("stability/min_margin", 0.01);
   NodeOptions options;
-  const Status status = loadNodeOptions(params, &options);
+  const Status status = params.load(&options);
   ASSERT_TRUE(status.ok) << status.message;
-  EXPECT_EQ(options.world.stability.rest_time, 0.0);
-  EXPECT_EQ(options.world.stability.min_margin, 0.01);
+  EXPECT_EQ(options.config.world.stability.rest_time, 0.0);
+  EXPECT_EQ(options.config.world.stability.min_margin, 0.01);
 }
 
 TEST(NodeOptions, RefusesBadStrings) {
@@ -223,29 +251,30 @@ TEST(NodeOptions, RefusesBadStrings) {
 TEST(NodeOptions, RefusesUnknownAndUnavailableModes) {
   const std::string unknown = expectRefused("stability/mode", std::string("magic"));
   EXPECT_NE(unknown.find("magic"), std::string::npos) << unknown;
-  // Which modes exist grows with the core; whatever it cannot run must be
-  // refused as "not available" (not as unknown), and what it can run accepted.
-  int unavailable = 0;
-  for (StabilityMode mode :
-       {StabilityMode::kNone, StabilityMode::kCom, StabilityMode::kEquilibrium}) {
-    const std::string name = toString(mode);
-    if (checkStabilityModeAvailable(mode).ok) {
-      MapParameterReader params;
-      params.set("stability/mode", name);
-      NodeOptions options;
-      const Status status = loadNodeOptions(params, &options);
-      EXPECT_TRUE(status.ok) << name << ": " << status.message;
-      EXPECT_EQ(options.world.mode, mode);
-    } else {
-      ++unavailable;
-      const std::string message = expectRefused("stability/mode", name);
-      EXPECT_NE(message.find("not available"), std::string::npos) << message;
-      EXPECT_NE(message.find("'" + name + "'"), std::string::npos) << message;
-    }
+  EXPECT_NE(unknown.find("not available"), std::string::npos) << unknown;
+  // Every mode of the registry is accepted, and nothing else.
+  for (const std::string& mode : availableStabilityModes()) {
+    PrivateParameters params;
+    params.set("stability/mode", mode);
+    NodeOptions options;
+    const Status status = params.load(&options);
+    EXPECT_TRUE(status.ok) << mode << ": " << status.message;
+    EXPECT_EQ(options.config.world.stability.mode, mode);
   }
-  EXPECT_TRUE(checkStabilityModeAvailable(StabilityMode::kNone).ok);
-  // Until every mode is implemented, at least one was exercised as refused.
-  EXPECT_GE(unavailable, 1);
+  EXPECT_TRUE(checkStabilityMode("none").ok);
+  EXPECT_TRUE(checkStabilityMode("com").ok);
+}
+
+TEST(NodeOptions, RefusesUnknownParametersByTheirName) {
+  // A typo must stop the node, not silently become a default.
+  const std::string top = expectRefused("time_stepp", 0.002);
+  EXPECT_NE(top.find("not a known parameter"), std::string::npos) << top;
+  EXPECT_NE(top.find("time_step"), std::string::npos) << top;  // what is known is listed
+  expectRefused("stability/rest_tme", 0.1);
+  expectRefused("table/colour", std::string("oak"));
+  expectRefused("sleeping/enable", true);
+  // A section given as a plain value is named as well.
+  expectRefused("sleeping", 3.0);
 }
 
 TEST(NodeOptions, RefusesWrongTypes) {
@@ -275,17 +304,17 @@ TEST(NodeOptions, RefusesTableSizeOfWrongLength) {
 TEST(NodeOptions, ResolvesDataPathsFromThePackage) {
   NodeOptions options;
   ASSERT_TRUE(resolveDataPaths("/pkg", &options).ok);
-  EXPECT_EQ(options.types_urdf, "/pkg/urdf/bricks.urdf");
-  EXPECT_EQ(options.materials_yaml, "/pkg/config/bricks.yaml");
-  ASSERT_EQ(options.scene_dirs.size(), 1u);
-  EXPECT_EQ(options.scene_dirs[0], "/pkg/scenes");
+  EXPECT_EQ(options.config.data.types_urdf, "/pkg/urdf/bricks.urdf");
+  EXPECT_EQ(options.config.data.materials_yaml, "/pkg/config/bricks.yaml");
+  ASSERT_EQ(options.config.data.scene_dirs.size(), 1u);
+  EXPECT_EQ(options.config.data.scene_dirs[0], "/pkg/scenes");
 
   NodeOptions given;
-  given.types_urdf = "/mine.urdf";
-  given.scene_dirs = {"/s"};
+  given.config.data.types_urdf = "/mine.urdf";
+  given.config.data.scene_dirs = {"/s"};
   ASSERT_TRUE(resolveDataPaths("/pkg", &given).ok);
-  EXPECT_EQ(given.types_urdf, "/mine.urdf");
-  EXPECT_EQ(given.scene_dirs, std::vector<std::string>{"/s"});
+  EXPECT_EQ(given.config.data.types_urdf, "/mine.urdf");
+  EXPECT_EQ(given.config.data.scene_dirs, std::vector<std::string>{"/s"});
 
   NodeOptions nowhere;
   const Status status = resolveDataPaths("", &nowhere);

@@ -16,4 +16,12 @@ struct Status {
   explicit operator bool() const { return ok; }
 };
 
+/// `status` with `prefix` in front of its message when it is a failure: a
+/// module's message names its field ("size = 0: ..."), its parent says where
+/// the module sits ("table/").
+inline Status prefixed(const std::string& prefix, Status status) {
+  if (!status.ok) status.message = prefix + status.message;
+  return status;
+}
+
 }  // namespace brick_stack_sim

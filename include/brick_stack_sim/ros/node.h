@@ -16,9 +16,8 @@
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/core/brick_type.h"
-#include "brick_stack_sim/core/world/brick_world.h"
-#include "brick_stack_sim/core/scene/scene_player.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/simulation.h"
 #include "brick_stack_sim/ros/node_options.h"
 
 namespace brick_stack_sim {
@@ -45,16 +44,16 @@ constexpr unsigned kMaxStepsPerRequest = 1000000;
 /// large scene emits a removed and a spawned event per brick in one burst.
 constexpr int kEventQueueSize = 10000;
 
-/// The ROS face of a BrickWorld: publishes its state, serves its requests and
+/// The ROS face of a Simulation: publishes its state, serves its requests and
 /// steps it on a wall timer so that sim time follows wall time times
 /// `real_time_factor`. Everything runs in the single ros::spin thread, so
 /// service handlers and steps never interleave. Each request is checked and
 /// then handed to one core call, which changes nothing when it refuses.
 class SimNode {
  public:
-  /// Creates the world, advertises every topic and service and, when
-  /// options.initial_scene is set, plays that scene; fails (and advertises
-  /// nothing) when the world or the scene cannot be created.
+  /// Creates the simulation, advertises every topic and service and, when
+  /// the parameter `scene` is set, plays that scene; fails (and advertises
+  /// nothing) when the simulation or the scene cannot be created.
   static Status create(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
                        const BrickTypeLibrary& types, std::unique_ptr<SimNode>* node);
 
@@ -66,8 +65,7 @@ class SimNode {
   bool paused() const { return paused_; }
 
  private:
-  SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
-          const BrickTypeLibrary& types);
+  SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options);
 
   // --- stepping --------------------------------------------------------------
   void onStepTimer(const ros::WallTimerEvent& event);
@@ -97,8 +95,8 @@ class SimNode {
   bool pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   bool step(StepSimulation::Request& request, StepSimulation::Response& response);
 
-  /// Empties the table (scene empty) or replaces the world's bricks by the
-  /// scene's; on failure the world is unchanged. `scheduled` receives the
+  /// Empties the table (scene empty) or replaces the bricks by the scene's;
+  /// on failure nothing changes. `scheduled` receives the
   /// scene's brick count, `message` what was done.
   Status resetWorld(const std::string& scene_name, unsigned* scheduled, std::string* message);
   /// Logs a refused request at INFO and fills the response fields.
@@ -106,15 +104,7 @@ class SimNode {
   bool refuse(const char* service, const Status& status, Response* response);
 
   NodeOptions options_;
-  BrickTypeLibrary types_;  ///< The configured types; scenes add theirs to a copy.
-  std::unique_ptr<BrickWorld> world_;
-  /// True while world_ was made for a scene's own table or types, so that an
-  /// empty reset goes back to the configured world.
-  bool scene_world_ = false;
-  /// Sim time of the worlds replaced by scene worlds, so published time keeps
-  /// running when a scene brings its own table [s].
-  double time_offset_ = 0.0;
-  ScenePlayer player_;
+  std::unique_ptr<Simulation> simulation_;
 
   bool paused_ = false;
   bool state_dirty_ = true;         ///< Something changed that ~bricks has not shown yet.

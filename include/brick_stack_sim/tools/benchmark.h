@@ -14,8 +14,8 @@ namespace brick_stack_sim {
 
 /// One way of simulating: a stability mode with Bullet's settings.
 struct BenchSetting {
-  std::string mode_label;  ///< none_nosleep, none_sleep, com
-  StabilityMode mode = StabilityMode::kNone;
+  std::string mode_label;     ///< none_nosleep, none_sleep, or the mode's name
+  std::string mode = "none";  ///< A mode of the registry.
   bool sleeping = true;
   double time_step = 1e-3;  ///< [s]
   int iterations = 20;

@@ -4,20 +4,19 @@
 #include <string>
 #include <vector>
 
+#include "brick_stack_sim/core/options/simulation_config.h"
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world/world_options.h"
 
 namespace brick_stack_sim {
 
 /// The arguments of `stack_sim_run`, parsed and validated.
 struct RunCommandLine {
-  std::string scene;           ///< Scene file, or name looked up in scene_dirs.
-  std::string report_path;     ///< Empty: the JSON goes to standard output.
-  std::string types_urdf;      ///< Brick types; default: the package's urdf/bricks.urdf.
-  std::string materials_yaml;  ///< Default: the package's config/bricks.yaml.
-  std::vector<std::string> scene_dirs;
-  std::optional<double> duration;  ///< [s]
-  WorldOptions world;
+  /// The node's options tree: the defaults, then the --config files, then
+  /// the flags. Its data paths are filled from the package where left empty.
+  SimulationConfig config;
+  std::vector<std::string> config_files;  ///< --config, in order.
+  std::string report_path;                ///< Empty: the JSON goes to standard output.
+  std::optional<double> duration;         ///< [s]
   bool help = false;
 };
 
@@ -26,7 +25,8 @@ std::string runUsage();
 
 /// Parses argv (without argv[0]); `data_dir` is where the package's urdf/,
 /// config/ and scenes/ live. An unknown flag, a missing or malformed value, or a
-/// bad setting gives an error naming it.
+/// bad setting gives an error naming it. The scene is `--scene`, else the
+/// config's `scene`; one of them is required.
 Status parseRunCommandLine(const std::vector<std::string>& args, const std::string& data_dir,
                            RunCommandLine* command_line);
 

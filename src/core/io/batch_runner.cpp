@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "brick_stack_sim/core/world/simulation.h"
 #include "io/json_writer.h"
 
 namespace brick_stack_sim {
@@ -32,42 +33,32 @@ double RunReport::maxDisplacement() const {
 
 Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
                 RunReport* report) {
-  BrickTypeLibrary all_types = types;
-  if (Status merged = mergeSceneTypes(scene, &all_types); !merged) return merged;
-  WorldOptions world_options = options.world;
-  if (scene.table) world_options.table = *scene.table;
-  std::unique_ptr<BrickWorld> world;
-  if (Status created = BrickWorld::create(world_options, all_types, &world); !created)
-    return created;
-
   const double last_placement = scene.bricks.empty() ? 0.0 : scene.bricks.back().at;
   const double duration = options.duration.value_or(last_placement + kDefaultSettleTime);
   if (!std::isfinite(duration) || duration < 0.0)
     return Status::error("duration must be finite and >= 0 s");
-  const auto steps = static_cast<std::uint64_t>(std::llround(duration / world_options.time_step));
-
+  std::unique_ptr<Simulation> simulation;
+  if (Status created = Simulation::create(options.world, types, &simulation); !created)
+    return created;
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (Status reset = simulation->reset(scene); !reset) return reset;
+  const BrickWorld& world = simulation->world();
+  const auto steps = static_cast<std::uint64_t>(std::llround(duration / world.options().time_step));
+  for (std::uint64_t i = 0; i < steps; ++i) {
+    simulation->step();
+    if (options.observer) options.observer(world);
+  }
   RunReport result;
   result.scene = scene.name;
-  result.world = world_options;
-  ScenePlayer player(scene.bricks, 0.0);
-  const auto wall_start = std::chrono::steady_clock::now();
-  auto refused = player.placeDue(world.get());
-  for (std::uint64_t i = 0; i < steps; ++i) {
-    world->step();
-    if (!player.done()) {
-      auto more = player.placeDue(world.get());
-      refused.insert(refused.end(), more.begin(), more.end());
-    }
-    if (options.observer) options.observer(*world);
-  }
+  result.world = world.options();
   result.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  result.sim_time = world->time();
-  result.cost = world->cost();
-  result.refused = std::move(refused);
-  result.scheduled = scene.bricks.size() - player.pending();
-  for (const BrickSnapshot& brick : world->snapshot()) result.bricks.push_back(outcomeOf(brick));
-  result.events = world->takeEvents();
+  result.sim_time = world.time();
+  result.cost = world.cost();
+  result.refused = simulation->takeRefused();
+  result.scheduled = scene.bricks.size() - simulation->player().pending();
+  for (const BrickSnapshot& brick : world.snapshot()) result.bricks.push_back(outcomeOf(brick));
+  result.events = simulation->takeEvents();
   *report = std::move(result);
   return Status::success();
 }
@@ -76,10 +67,10 @@ std::string toJson(const RunReport& r) {
   JsonWriter json;
   json.beginObject();
   json.key("scene").value(r.scene);
-  json.key("mode").value(toString(r.world.mode));
+  json.key("mode").value(r.world.stability.mode);
   json.key("time_step").value(r.world.time_step);
   json.key("iterations").value(static_cast<unsigned long long>(r.world.solver_iterations));
-  json.key("sleeping").value(r.world.sleeping);
+  json.key("sleeping").value(r.world.sleeping.enabled);
   json.key("sim_time").value(r.sim_time);
   json.key("wall_time").value(r.wall_time);
   json.key("steps").value(static_cast<unsigned long long>(r.cost.steps));

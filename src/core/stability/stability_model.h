@@ -1,38 +1,18 @@
 #pragma once
+// The interface between the world and a stability model (DESIGN.md section 2).
 
-#include <cstdint>
-#include <limits>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "brick_stack_sim/core/brick.h"
 #include "brick_stack_sim/core/geometry/polygon2d.h"
+#include "brick_stack_sim/core/stability/stability_options.h"
+#include "stability/contact.h"
 
 namespace brick_stack_sim {
-
-/// Names a body for the stability models: a brick's placement serial, or one
-/// of the two static bodies. Models never see Bullet.
-using BodyHandle = std::uint32_t;
-constexpr BodyHandle kTableHandle = std::numeric_limits<BodyHandle>::max();
-constexpr BodyHandle kFloorHandle = kTableHandle - 1;
-inline bool isGround(BodyHandle handle) { return handle >= kFloorHandle; }
-
-/// A brick as the stability model sees it in one step.
-struct BodyMotion {
-  BodyHandle handle = 0;
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();               ///< [m], world
-  double mass = 0.0;                                           ///< [kg]
-  Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
-};
-
-/// The touching points of one pair of bodies in one step.
-struct PairContact {
-  BodyHandle a = 0, b = 0;
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from b towards a.
-  std::vector<Eigen::Vector3d> points;                ///< World [m].
-  double approach_speed = 0.0;  ///< Largest closing speed along the normal [m/s].
-};
 
 /// One support of a brick: the patch where it rests on `supporter`.
 struct SupportPatch {
@@ -55,24 +35,29 @@ struct BrickStability {
 
 /// Why a brick left the stack.
 enum class WakeCause {
-  kOutsideSupport,    ///< Its COM-above left its support hull.
+  kOutsideSupport,    ///< Its load left its support (the criterion says how).
   kCarried,           ///< It rests (directly or not) on a brick that was woken.
   kSupporterRemoved,  ///< A brick under it was removed.
   kPushed,            ///< An impulse was applied to it.
   kSupportCycle,      ///< Contacts made a cycle in the support graph (no order of loads).
 };
 
+/// A brick leaves Bullet: frozen as `kind` (kStable or kLeaning).
+struct FreezeDecision {
+  BodyHandle brick = 0;
+  BrickState kind = BrickState::kStable;
+  double margin = 0.0;  ///< [m]
+  std::vector<BodyHandle> supporters;
+  std::string reason;  ///< Worded by the model, for ~events.
+};
+
+/// A frozen brick returns to Bullet.
 struct WakeDecision {
   BodyHandle brick = 0;
   WakeCause cause = WakeCause::kOutsideSupport;
   BodyHandle because_of = 0;  ///< The woken or removed brick for kCarried, kSupporterRemoved.
   double margin = 0.0;        ///< For kOutsideSupport [m].
-};
-
-struct FreezeDecision {
-  BodyHandle brick = 0;
-  double margin = 0.0;  ///< [m]
-  std::vector<BodyHandle> supporters;
+  std::string reason;         ///< Worded by the model, for ~events.
 };
 
 struct StabilityDecisions {
@@ -81,27 +66,71 @@ struct StabilityDecisions {
   bool empty() const { return freeze.empty() && wake.empty(); }
 };
 
-/// A stability model on top of the physics engine (DESIGN.md section 2). It
-/// sees the moving bricks and their contacts each step and decides which bricks
-/// leave the engine (freeze) and which return to it (wake).
+/// A brick placed at rest, with its supports found from geometry: Bullet has
+/// not simulated it yet.
+struct RestingPlacement {
+  BodyMotion brick;
+  std::vector<PairContact> contacts;
+};
+
+/// What the model is told in one pass of the decision path: a step, or a
+/// request between steps (a placement, a removal, a push). Everything goes
+/// through StabilityModel::decide, so a model has one place where it reacts.
+struct StabilityInput {
+  double dt = 0.0;                 ///< Sim time since the last step [s]; 0 between steps.
+  std::vector<BodyMotion> movers;  ///< The bricks Bullet simulates, after this step.
+  /// This step's touching pairs (frozen-frozen pairs never touch in Bullet);
+  /// null when there are none to tell.
+  const std::vector<PairContact>* contacts = nullptr;
+  std::vector<RestingPlacement> placed;  ///< Bricks just placed at rest.
+  std::vector<BodyHandle> removed;       ///< Bricks that left the world.
+  std::vector<BodyHandle> pushed;        ///< Bricks pushed from outside.
+};
+
+/// A moving brick that may reach a frozen one within the coming Bullet step.
+struct Approach {
+  BodyMotion mover;
+  BodyHandle frozen = 0;
+};
+
+/// Would a brick at rest here join the stack, and would the stack under it
+/// bear its load? The answer of a what-if query: nothing changes.
+struct PlacementEvaluation {
+  bool stable = false;  ///< It would freeze at once and nothing under it would fall.
+  BrickState kind = BrickState::kDynamic;  ///< kStable or kLeaning when stable.
+  double margin = 0.0;                     ///< Of the brick itself [m].
+  std::vector<BodyHandle> supporters;      ///< What it would rest on.
+  std::vector<BodyHandle> would_fall;      ///< Frozen bricks its load would tip.
+  std::string reason;
+};
+
+/// Names bodies in the reasons a model words ("b3", "table").
+using BodyNamer = std::function<std::string(BodyHandle)>;
+
+/// A stability model on top of the physics engine. It sees the moving bricks
+/// and their contacts each step, and every change made from outside, and
+/// decides which bricks leave the engine (freeze) and which return (wake).
 class StabilityModel {
  public:
   virtual ~StabilityModel() = default;
-  /// One step: `movers` are the bricks not frozen by this model, `contacts`
-  /// this step's touching pairs (frozen-frozen pairs never touch in Bullet).
-  virtual void update(double dt, const std::vector<BodyMotion>& movers,
-                      const std::vector<PairContact>& contacts, StabilityDecisions* decisions) = 0;
-  /// A brick was just placed at rest; `contacts` are its touching supports
-  /// found from geometry (Bullet has not seen it yet). A stable placement
-  /// joins the stack at once, before Bullet's first, unconverged steps can
-  /// rock it.
-  virtual void placedAtRest(const BodyMotion& brick, const std::vector<PairContact>& contacts,
-                            StabilityDecisions* decisions) = 0;
-  /// A brick leaves the world; decisions wake what it carried.
-  virtual void remove(BodyHandle brick, StabilityDecisions* decisions) = 0;
-  /// An outside push: the brick and what it carries must wake.
-  virtual void wake(BodyHandle brick, WakeCause cause, StabilityDecisions* decisions) = 0;
-  virtual void clear() = 0;
+
+  /// Whether beforeBulletStep() wants the approaches; the world skips
+  /// gathering them for a model that does not.
+  virtual bool watchesApproaches() const { return false; }
+  /// Before Bullet advances the movers: the pairs of a mover and a frozen
+  /// brick it may reach within this step, seen before Bullet's solver would
+  /// bounce the mover off a static collider (impacts). Nothing by default.
+  virtual void beforeBulletStep(double /*dt*/, const std::vector<Approach>& /*approaches*/,
+                                StabilityDecisions* /*decisions*/) {}
+
+  /// The decision path: one step, or one change between steps.
+  virtual void decide(const StabilityInput& input, StabilityDecisions* decisions) = 0;
+
+  /// What-if: would `brick`, at rest with these `contacts` (from geometry),
+  /// join the stack? Nothing changes.
+  virtual PlacementEvaluation evaluatePlacement(const BodyMotion& brick,
+                                                const std::vector<PairContact>& contacts) const = 0;
+
   /// What the model knows of `brick`; false when it knows nothing.
   virtual bool describe(BodyHandle brick, BrickStability* stability) const = 0;
 };

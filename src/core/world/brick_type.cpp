@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include <urdf_parser/urdf_parser.h>
-#include <yaml-cpp/yaml.h>
+
+#include "brick_stack_sim/core/options/options_reader.h"
+#include "brick_stack_sim/core/options/yaml_parameters.h"
 
 namespace brick_stack_sim {
 
@@ -23,16 +25,15 @@ Status readFile(const std::string& path, const char* what, std::string* text) {
   return Status::success();
 }
 
-/// Friction and restitution of one yaml entry over the given defaults.
-Status readMaterial(const YAML::Node& node, const std::string& where, BrickType* type) {
-  if (!node.IsMap()) return Status::error(where + ": expected a map");
-  try {
-    if (node["friction"]) type->friction = node["friction"].as<double>();
-    if (node["restitution"]) type->restitution = node["restitution"].as<double>();
-    if (node["rolling_friction"]) type->rolling_friction = node["rolling_friction"].as<double>();
-  } catch (const YAML::Exception& error) {
-    return Status::error(where + ": " + error.what());
-  }
+/// Friction and restitution of one section of the materials over `*type`;
+/// a key it does not know is an error.
+Status readMaterial(OptionsReader& reader, BrickType* type) {
+  BrickType material = *type;
+  reader.read("friction", &material.friction);
+  reader.read("restitution", &material.restitution);
+  reader.read("rolling_friction", &material.rolling_friction);
+  if (Status read = reader.finish(); !read) return read;
+  *type = material;
   return Status::success();
 }
 
@@ -104,19 +105,24 @@ Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& m
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
   if (!model) return Status::error("not a valid URDF");
 
-  YAML::Node loaded;
-  try {
-    loaded = materials_yaml.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(materials_yaml);
-  } catch (const YAML::Exception& error) {
-    return Status::error(std::string("brick materials yaml: ") + error.what());
+  ParameterValue materials;
+  if (!materials_yaml.empty()) {
+    if (Status parsed = parseYamlParameters(materials_yaml, "brick materials yaml", &materials);
+        !parsed)
+      return parsed;
   }
-  if (!loaded.IsMap()) return Status::error("brick materials yaml: expected a map at the top");
-  const YAML::Node& materials = loaded;
+  OptionsReader reader(materials);
   BrickType defaults;
-  if (materials["default"]) {
-    if (Status read = readMaterial(materials["default"], "materials default", &defaults); !read)
-      return read;
-  }
+  reader.section("default", &readMaterial, &defaults);
+  std::string default_type;
+  reader.read("default_type", &default_type);
+  // One section per type, named by the URDF: read below, type by type.
+  const ParameterValue* own_materials = materials.find("types");
+  reader.skip("types");
+  if (Status read = reader.finish(); !read) return prefixed("brick materials yaml: ", read);
+  if (own_materials && !own_materials->isMap())
+    return Status::error("brick materials yaml: types is " + own_materials->describe() +
+                         ", expected a map of type: {friction, restitution, rolling_friction}");
 
   BrickTypeLibrary result;
   for (const auto& entry : model->links_) {
@@ -138,26 +144,22 @@ Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& m
     if (off_diagonal > 1e-9 * type.inertia.cwiseAbs().sum())
       return Status::error("link '" + link->name +
                            "': inertia must be diagonal in the box frame (a uniform box)");
-    const YAML::Node own = materials["types"] ? materials["types"][type.name] : YAML::Node();
-    if (own.IsDefined() && !own.IsNull()) {
-      if (Status read = readMaterial(own, "materials of '" + type.name + "'", &type); !read)
-        return read;
+    if (const ParameterValue* own = own_materials ? own_materials->find(type.name) : nullptr) {
+      OptionsReader own_reader(*own, "types/" + type.name + "/");
+      if (Status read = readMaterial(own_reader, &type); !read)
+        return prefixed("brick materials yaml: ", read);
     }
     if (Status added = result.add(type); !added) return added;
   }
   if (result.empty()) return Status::error("the URDF has no link with a box geometry");
 
-  if (materials["types"]) {
-    if (!materials["types"].IsMap()) return Status::error("materials 'types' must be a map");
-    for (const auto& entry : materials["types"]) {
-      const std::string name = entry.first.as<std::string>();
+  if (own_materials) {
+    for (const auto& [name, material] : own_materials->map())
       if (!result.find(name))
         return Status::error("materials name type '" + name + "' that the URDF does not define");
-    }
   }
-  if (materials["default_type"]) {
-    if (Status set = result.setDefaultType(materials["default_type"].as<std::string>()); !set)
-      return set;
+  if (!default_type.empty()) {
+    if (Status set = result.setDefaultType(default_type); !set) return set;
   }
   *library = std::move(result);
   return Status::success();

@@ -1,7 +1,7 @@
-// The words the core uses for its enums in reports, logs and parameters.
+// The words the core uses for its enums in reports and logs.
 #include "brick_stack_sim/core/brick.h"
 #include "brick_stack_sim/core/sim_event.h"
-#include "brick_stack_sim/core/stability/stability_mode.h"
+#include "world/brick_record.h"
 
 namespace brick_stack_sim {
 
@@ -39,33 +39,36 @@ const char* toString(SimEventKind kind) {
   return "unknown";
 }
 
-const char* toString(StabilityMode mode) {
+const char* toString(BrickMode mode) {
   switch (mode) {
-    case StabilityMode::kNone:
-      return "none";
-    case StabilityMode::kCom:
-      return "com";
-    case StabilityMode::kEquilibrium:
-      return "equilibrium";
+    case BrickMode::kDynamic:
+      return "dynamic";
+    case BrickMode::kFrozenStable:
+      return "frozen-stable";
+    case BrickMode::kFrozenLeaning:
+      return "frozen-leaning";
+    case BrickMode::kHeld:
+      return "held";
   }
   return "unknown";
 }
 
-Status parseStabilityMode(const std::string& text, StabilityMode* mode) {
-  for (StabilityMode candidate :
-       {StabilityMode::kNone, StabilityMode::kCom, StabilityMode::kEquilibrium}) {
-    if (text == toString(candidate)) {
-      *mode = candidate;
-      return Status::success();
-    }
+BrickState toState(BrickMode mode) {
+  switch (mode) {
+    case BrickMode::kDynamic:
+      return BrickState::kDynamic;
+    case BrickMode::kFrozenStable:
+      return BrickState::kStable;
+    case BrickMode::kFrozenLeaning:
+      return BrickState::kLeaning;
+    case BrickMode::kHeld:
+      return BrickState::kHeld;
   }
-  return Status::error("unknown stability mode '" + text + "' (expected none, com or equilibrium)");
+  return BrickState::kDynamic;
 }
 
-Status checkStabilityModeAvailable(StabilityMode mode) {
-  if (mode == StabilityMode::kNone || mode == StabilityMode::kCom) return Status::success();
-  return Status::error(std::string("stability mode '") + toString(mode) +
-                       "' is not available in this version; available: none, com");
+BrickMode frozenMode(BrickState kind) {
+  return kind == BrickState::kLeaning ? BrickMode::kFrozenLeaning : BrickMode::kFrozenStable;
 }
 
 }  // namespace brick_stack_sim

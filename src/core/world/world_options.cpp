@@ -1,25 +1,32 @@
 #include "brick_stack_sim/core/world/world_options.h"
 
-#include <cmath>
-#include <sstream>
+#include "brick_stack_sim/core/options/options_reader.h"
+#include "util/validation.h"
 
 namespace brick_stack_sim {
 
-namespace {
-
-Status bad(const char* name, double value, const char* requirement) {
-  std::ostringstream text;
-  text << name << " = " << value << ": " << requirement;
-  return Status::error(text.str());
+Status validate(const TableOptions& t) {
+  if (!positive(t.size.x()) || !positive(t.size.y()))
+    return bad("size", positive(t.size.x()) ? t.size.y() : t.size.x(), "must be > 0 m");
+  if (!positive(t.thickness)) return bad("thickness", t.thickness, "must be > 0 m");
+  if (!positive(t.height) || t.height < t.thickness)
+    return bad("height", t.height, "must be > 0 m and at least table/thickness");
+  if (!nonNegative(t.friction)) return bad("friction", t.friction, "must be >= 0");
+  if (!nonNegative(t.restitution) || t.restitution > 1.0)
+    return bad("restitution", t.restitution, "must be in [0, 1]");
+  return Status::success();
 }
 
-bool positive(double value) { return std::isfinite(value) && value > 0.0; }
-bool nonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
-
-}  // namespace
+Status validate(const SleepingOptions& s) {
+  if (!nonNegative(s.linear_threshold))
+    return bad("linear_threshold", s.linear_threshold, "must be >= 0 m/s");
+  if (!nonNegative(s.angular_threshold))
+    return bad("angular_threshold", s.angular_threshold, "must be >= 0 rad/s");
+  if (!positive(s.time)) return bad("time", s.time, "must be > 0 s");
+  return Status::success();
+}
 
 Status validate(const WorldOptions& o) {
-  if (Status available = checkStabilityModeAvailable(o.mode); !available) return available;
   // Below 10 us a step resolves nothing Bullet needs; at 0.1 s a brick that
   // has fallen a few centimetres crosses several of its own thicknesses in one
   // step, which no contact can catch.
@@ -29,12 +36,7 @@ Status validate(const WorldOptions& o) {
     return bad("solver_iterations", o.solver_iterations, "must be in [1, 10000]");
   if (!nonNegative(o.gravity) || o.gravity > 1000.0)
     return bad("gravity", o.gravity, "must be in [0, 1000] m/s^2");
-  if (!nonNegative(o.linear_sleep_threshold))
-    return bad("sleeping/linear_threshold", o.linear_sleep_threshold, "must be >= 0 m/s");
-  if (!nonNegative(o.angular_sleep_threshold))
-    return bad("sleeping/angular_threshold", o.angular_sleep_threshold, "must be >= 0 rad/s");
-  if (!positive(o.deactivation_time))
-    return bad("sleeping/time", o.deactivation_time, "must be > 0 s");
+  if (Status sleeping = validate(o.sleeping); !sleeping) return prefixed("sleeping/", sleeping);
   if (!std::isfinite(o.split_impulse_penetration_threshold) ||
       o.split_impulse_penetration_threshold > 0.0)
     return bad("split_impulse_penetration_threshold", o.split_impulse_penetration_threshold,
@@ -49,32 +51,55 @@ Status validate(const WorldOptions& o) {
     return bad("max_linear_speed", o.max_linear_speed, "must be > 0 m/s");
   if (!positive(o.max_angular_speed))
     return bad("max_angular_speed", o.max_angular_speed, "must be > 0 rad/s");
-  const TableOptions& t = o.table;
-  if (!positive(t.size.x()) || !positive(t.size.y()))
-    return bad("table/size", positive(t.size.x()) ? t.size.y() : t.size.x(), "must be > 0 m");
-  if (!positive(t.thickness)) return bad("table/thickness", t.thickness, "must be > 0 m");
-  if (!positive(t.height) || t.height < t.thickness)
-    return bad("table/height", t.height, "must be > 0 m and at least table/thickness");
-  if (!nonNegative(t.friction)) return bad("table/friction", t.friction, "must be >= 0");
-  if (!nonNegative(t.restitution) || t.restitution > 1.0)
-    return bad("table/restitution", t.restitution, "must be in [0, 1]");
-  const StabilityOptions& s = o.stability;
-  if (!positive(s.rest_linear_speed))
-    return bad("stability/rest_linear_speed", s.rest_linear_speed, "must be > 0 m/s");
-  if (!positive(s.rest_angular_speed))
-    return bad("stability/rest_angular_speed", s.rest_angular_speed, "must be > 0 rad/s");
-  if (!nonNegative(s.rest_time)) return bad("stability/rest_time", s.rest_time, "must be >= 0 s");
-  if (!positive(s.impact_speed))
-    return bad("stability/impact_speed", s.impact_speed, "must be > 0 m/s");
-  if (!positive(s.support_normal_tolerance) || s.support_normal_tolerance >= M_PI / 2)
-    return bad("stability/support_normal_tolerance", s.support_normal_tolerance,
-               "must be in (0, pi/2) rad");
-  if (!nonNegative(s.flush_angle) || s.flush_angle > 0.1)
-    return bad("stability/flush_angle", s.flush_angle, "must be in [0, 0.1] rad");
-  if (!positive(s.contact_distance) || s.contact_distance > 0.01)
-    return bad("stability/contact_distance", s.contact_distance, "must be in (0, 0.01] m");
-  if (!nonNegative(s.min_margin) || s.min_margin > 0.01)
-    return bad("stability/min_margin", s.min_margin, "must be in [0, 0.01] m");
+  if (Status table = validate(o.table); !table) return prefixed("table/", table);
+  if (Status stability = validate(o.stability); !stability)
+    return prefixed("stability/", stability);
+  return Status::success();
+}
+
+Status readTableOptions(OptionsReader& reader, TableOptions* options) {
+  TableOptions table = *options;
+  reader.read("size", &table.size);
+  reader.read("thickness", &table.thickness);
+  reader.read("height", &table.height);
+  reader.read("friction", &table.friction);
+  reader.read("restitution", &table.restitution);
+  if (Status read = reader.finish(); !read) return read;
+  if (Status valid = validate(table); !valid) return reader.named(valid);
+  *options = table;
+  return Status::success();
+}
+
+Status readSleepingOptions(OptionsReader& reader, SleepingOptions* options) {
+  SleepingOptions sleeping = *options;
+  reader.read("enabled", &sleeping.enabled);
+  reader.read("linear_threshold", &sleeping.linear_threshold);
+  reader.read("angular_threshold", &sleeping.angular_threshold);
+  reader.read("time", &sleeping.time);
+  if (Status read = reader.finish(); !read) return read;
+  if (Status valid = validate(sleeping); !valid) return reader.named(valid);
+  *options = sleeping;
+  return Status::success();
+}
+
+Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
+  WorldOptions world = *options;
+  reader.read("time_step", &world.time_step);
+  reader.read("solver_iterations", &world.solver_iterations);
+  reader.read("gravity", &world.gravity);
+  reader.section("sleeping", &readSleepingOptions, &world.sleeping);
+  reader.read("split_impulse_penetration_threshold", &world.split_impulse_penetration_threshold);
+  reader.read("erp", &world.erp);
+  reader.read("collision_margin", &world.collision_margin);
+  reader.read("overlap_tolerance", &world.overlap_tolerance);
+  reader.read("fall_off_depth", &world.fall_off_depth);
+  reader.read("max_linear_speed", &world.max_linear_speed);
+  reader.read("max_angular_speed", &world.max_angular_speed);
+  reader.section("table", &readTableOptions, &world.table);
+  reader.section("stability", &readStabilityOptions, &world.stability);
+  if (!reader.ok()) return reader.finish();
+  if (Status valid = validate(world); !valid) return reader.named(valid);
+  *options = world;
   return Status::success();
 }
 

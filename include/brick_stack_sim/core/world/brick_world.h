@@ -23,40 +23,55 @@ struct CostCounters {
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
   std::uint64_t blowups = 0;            ///< Runaway speeds (diverged solver) caught and repaired.
   std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
-  // Wall time per stage [s], for the benchmark's cost shares.
-  double bullet_seconds = 0.0;     ///< Bullet's stepSimulation and the finiteness check.
+  // Wall time per stage of step() [s], for the benchmark's cost shares.
+  double bullet_seconds = 0.0;     ///< Advancing Bullet, with its colliders and the guard.
   double contact_seconds = 0.0;    ///< Reading contacts from Bullet's manifolds.
   double stability_seconds = 0.0;  ///< The stability model and freeze / wake.
 };
 
+/// The answer to "would a brick at rest here be stable?" (evaluatePlacement).
+struct PlacementReport {
+  bool stable = false;  ///< It would join the stack at once, and nothing under it would fall.
+  BrickState state = BrickState::kDynamic;  ///< kStable or kLeaning when stable.
+  double margin = 0.0;                      ///< Of the brick itself, as Brick.msg's margin [m].
+  std::vector<std::string> supported_by;    ///< Brick ids, "table" or "floor".
+  std::vector<std::string> would_fall;      ///< Frozen bricks its load would tip.
+  std::string reason;
+};
+
 /// Bricks on a table, simulated by Bullet in double precision with a fixed
-/// time step, with an optional stability model on top (WorldOptions::mode)
+/// time step, with a stability model on top (WorldOptions::stability.mode)
 /// that freezes bricks resting stably and wakes them when their load leaves
-/// their support. Every request is validated first: a refused request returns an
-/// error Status and leaves the world exactly as it was. Bricks are kept in
+/// their support. Every request is validated first: a refused request returns
+/// an error Status and leaves the world exactly as it was. Bricks are kept in
 /// placement order, so the same calls in the same order give bit-identical
 /// results.
 class BrickWorld {
  public:
   /// Fails (and leaves `world` empty) when the options or types are invalid.
+  /// The world's clock starts at `start_time` [s] (a world that replaces
+  /// another goes on from its time).
   static Status create(const WorldOptions& options, const BrickTypeLibrary& types,
-                       std::unique_ptr<BrickWorld>* world);
+                       std::unique_ptr<BrickWorld>* world, double start_time = 0.0);
   ~BrickWorld();
   BrickWorld(const BrickWorld&) = delete;
   BrickWorld& operator=(const BrickWorld&) = delete;
 
   /// Would addBrick() accept this placement? Nothing changes.
   Status checkPlacement(const BrickPlacement& placement) const;
-  /// Adds a brick; `assigned_id` (optional) receives its id.
+  /// Adds a brick; `assigned_id` (optional) receives its id. A brick placed
+  /// at rest is judged by the model at once.
   Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr);
   /// Removes a brick; what rested on it is woken.
   Status removeBrick(const std::string& id);
-  /// Applies an impulse [N s] at a world point [m] to a brick, waking it.
+  /// Applies an impulse [N s] at a world point [m] to a brick, waking it and
+  /// what it carries.
   Status applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
                       const Eigen::Vector3d& point);
-  /// Removes every brick (an event each); the clock keeps running so that
-  /// simulated time never goes backwards for observers.
-  void clear();
+  /// Would a brick placed at rest here join the stack, and would the stack
+  /// bear it? Refused like addBrick() when the placement is invalid, and when
+  /// the world has no stability model (mode none). Nothing changes.
+  Status evaluatePlacement(const BrickPlacement& placement, PlacementReport* report) const;
 
   /// Advances the world by one fixed time step.
   void step();
@@ -77,10 +92,13 @@ class BrickWorld {
   /// Events since the last call, oldest first.
   std::vector<SimEvent> takeEvents();
 
+  /// Every brick is where its mode says (Bullet's world, the movers, the
+  /// frozen colliders); checked after each step in debug builds.
+  Status checkInvariants() const;
+
  private:
-  struct Impl;
-  explicit BrickWorld(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  explicit BrickWorld(std::unique_ptr<struct WorldState> state);
+  std::unique_ptr<struct WorldState> state_;
 };
 
 }  // namespace brick_stack_sim

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "brick_stack_sim/core/options/parameter_value.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/world/world_options.h"
+
+namespace brick_stack_sim {
+
+class OptionsReader;
+
+/// Where brick types and scenes come from.
+struct DataOptions {
+  std::string types_urdf;      ///< Brick types (geometry, mass, inertia); empty: the package's.
+  std::string materials_yaml;  ///< Friction and restitution per type; empty: the package's.
+  std::vector<std::string> scene_dirs;  ///< Where scene names are looked up; empty: the package's.
+  std::string scene;  ///< Played at start (a name or a path); empty: an empty table.
+};
+
+/// How the ROS node publishes and paces the world. The batch runner reads
+/// them too, and uses none, so that one yaml file serves both programs.
+struct PublishOptions {
+  double rate = 30.0;              ///< ~bricks, tf and markers per second of sim time [Hz].
+  bool clock = false;              ///< Publish /clock so the graph can run on sim time.
+  double real_time_factor = 1.0;   ///< Sim time per wall time [-]; 0: as fast as possible.
+  std::string frame_id = "world";  ///< Fixed frame of every published pose.
+};
+
+/// Everything config/sim.yaml and config/stability.yaml hold: the one
+/// options tree of the node (its private parameters) and of the runner
+/// (stack_sim_run --config). Keys: the world's (WorldOptions) and
+/// publish_rate, publish_clock, real_time_factor, frame_id, types_urdf,
+/// materials_yaml, scene_dirs and scene, all at the top.
+struct SimulationConfig {
+  WorldOptions world;
+  DataOptions data;
+  PublishOptions publish;
+};
+
+/// Checks every field; the message names the first bad one by its key.
+Status validate(const PublishOptions& options);
+
+/// Reads the whole tree at the reader's level; any key it does not know is
+/// an error ("time_stepp is not a known parameter (known here: ...)"), and
+/// so is a bad value ("time_step = -1: must be in [1e-5, 0.1] s"), named by
+/// its path. `*config` changes only on success.
+Status readSimulationConfig(OptionsReader& reader, SimulationConfig* config);
+
+/// Reads yaml files into one tree, later files overriding earlier ones key
+/// by key (as `rosparam load` of both into one namespace does), then reads
+/// the tree over `*config`. Messages start with the files' names.
+Status loadSimulationConfig(const std::vector<std::string>& yaml_paths, SimulationConfig* config);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,291 @@
+#include "bullet/bullet_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
+
+#include "bullet/bullet_conversions.h"
+#include "bullet/bullet_handles.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// Bullet multiplies the two friction coefficients of a pair, which turns pine
+/// on pine (0.5 each) into 0.25. The geometric mean keeps a material's own
+/// coefficient against itself and stays symmetric for mixed pairs.
+btScalar combinedFriction(const btCollisionObject* a, const btCollisionObject* b) {
+  return std::sqrt(a->getFriction() * b->getFriction());
+}
+
+}  // namespace
+
+struct BulletScene::Impl {
+  struct Body {
+    std::unique_ptr<btRigidBody> rigid;
+    bool in_world = false;
+  };
+
+  WorldOptions options;
+  // Declaration order is destruction order in reverse: the world goes first.
+  std::unique_ptr<btDefaultCollisionConfiguration> collision_configuration;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> box_box_algorithm;
+  std::unique_ptr<btBroadphaseInterface> broadphase;
+  std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
+  std::map<std::string, std::unique_ptr<btBoxShape>> shapes;  // one per brick type
+  std::unique_ptr<btBoxShape> table_shape;
+  std::unique_ptr<btStaticPlaneShape> floor_shape;
+  std::unique_ptr<btRigidBody> table_body;
+  std::unique_ptr<btRigidBody> floor_body;
+  std::vector<Body> bodies;  // by handle: serials are dense and never reused
+  std::unique_ptr<btDiscreteDynamicsWorld> world;
+
+  explicit Impl(const WorldOptions& world_options);
+  ~Impl();
+  btBoxShape* shapeFor(const BrickType& type);
+  Body& body(BodyHandle handle) { return bodies.at(handle); }
+  const Body& body(BodyHandle handle) const { return bodies.at(handle); }
+  btRigidBody& rigid(BodyHandle handle) { return *body(handle).rigid; }
+  const btRigidBody& rigid(BodyHandle handle) const { return *body(handle).rigid; }
+};
+
+BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_options) {
+  collision_configuration = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher = std::make_unique<btCollisionDispatcher>(collision_configuration.get());
+  // Bullet's default box-box path is GJK/EPA, which finds one contact point per
+  // step and needs several steps to build a resting patch; a brick lying on
+  // another wobbles meanwhile. The box-box clipper returns the whole face patch
+  // (up to 4 points) in one step, which is what flat stacking needs.
+  box_box_algorithm = std::make_unique<btBoxBoxCollisionAlgorithm::CreateFunc>();
+  dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
+                                          box_box_algorithm.get());
+  broadphase = std::make_unique<btDbvtBroadphase>();
+  solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+  world = std::make_unique<btDiscreteDynamicsWorld>(dispatcher.get(), broadphase.get(),
+                                                    solver.get(), collision_configuration.get());
+  world->setGravity(btVector3(0, 0, -options.gravity));
+  // Bodies at rest keep their AABB; recomputing every static brick's box each
+  // step dominated the cost of large settled scenes.
+  world->setForceUpdateAllAabbs(false);
+  world->getDispatchInfo().m_deterministicOverlappingPairs = true;
+
+  btContactSolverInfo& solver_info = world->getSolverInfo();
+  solver_info.m_numIterations = options.solver_iterations;
+  // Split impulse corrects penetration without feeding velocity back into the
+  // stack. Bullet only splits below its threshold (-4 cm by default, five brick
+  // thicknesses, so never at this scale); ours is scaled to the brick.
+  solver_info.m_splitImpulse = 1;
+  solver_info.m_splitImpulsePenetrationThreshold = options.split_impulse_penetration_threshold;
+  solver_info.m_erp = options.erp;
+  solver_info.m_erp2 = options.erp;
+  // Never SOLVER_RANDMIZE_ORDER: the same inputs must give the same bits.
+  solver_info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD;
+
+  // Bullet keeps these two as globals; every world sets the same values.
+  gCalculateCombinedFrictionCallback = &combinedFriction;
+  gDeactivationTime = options.sleeping.time;
+
+  const TableOptions& table = options.table;
+  table_shape = std::make_unique<btBoxShape>(
+      btVector3(table.size.x() / 2, table.size.y() / 2, table.thickness / 2));
+  table_shape->setMargin(options.collision_margin);
+  btRigidBody::btRigidBodyConstructionInfo table_info(0.0, nullptr, table_shape.get());
+  table_info.m_startWorldTransform.setOrigin(btVector3(0, 0, -table.thickness / 2));
+  table_info.m_friction = table.friction;
+  table_info.m_restitution = table.restitution;
+  table_body = std::make_unique<btRigidBody>(table_info);
+  table_body->setUserIndex(kTableUserIndex);
+  world->addRigidBody(table_body.get());
+
+  // The floor catches what falls off the table, so no brick is ever lost.
+  floor_shape = std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), -table.height);
+  btRigidBody::btRigidBodyConstructionInfo floor_info(0.0, nullptr, floor_shape.get());
+  floor_info.m_friction = table.friction;
+  floor_info.m_restitution = table.restitution;
+  floor_body = std::make_unique<btRigidBody>(floor_info);
+  floor_body->setUserIndex(kFloorUserIndex);
+  world->addRigidBody(floor_body.get());
+}
+
+BulletScene::Impl::~Impl() {
+  for (Body& body : bodies)
+    if (body.in_world) world->removeRigidBody(body.rigid.get());
+  world->removeRigidBody(table_body.get());
+  world->removeRigidBody(floor_body.get());
+  bodies.clear();
+  world.reset();
+}
+
+btBoxShape* BulletScene::Impl::shapeFor(const BrickType& type) {
+  std::unique_ptr<btBoxShape>& shape = shapes[type.name];
+  if (!shape) {
+    shape = std::make_unique<btBoxShape>(convertEigenToBt(type.halfExtents()));
+    // btBoxShape keeps its outer size and puts the margin inside; Bullet's
+    // 4 cm default would be clamped to 10 % of the half thickness anyway.
+    shape->setMargin(std::min(options.collision_margin, 0.1 * type.halfExtents().minCoeff()));
+  }
+  return shape.get();
+}
+
+BulletScene::BulletScene(const WorldOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+BulletScene::~BulletScene() = default;
+
+void BulletScene::addBrick(BodyHandle handle, const BrickType& type,
+                           const BrickPlacement& placement) {
+  btRigidBody::btRigidBodyConstructionInfo info(type.mass, nullptr, impl_->shapeFor(type),
+                                                convertEigenToBt(type.inertia));
+  info.m_startWorldTransform = convertEigenToBt(placement.pose);
+  info.m_friction = type.friction;
+  info.m_rollingFriction = type.rolling_friction;
+  info.m_restitution = type.restitution;
+  info.m_linearSleepingThreshold = impl_->options.sleeping.linear_threshold;
+  info.m_angularSleepingThreshold = impl_->options.sleeping.angular_threshold;
+  auto body = std::make_unique<btRigidBody>(info);
+  body->setLinearVelocity(convertEigenToBt(placement.linear_velocity));
+  body->setAngularVelocity(convertEigenToBt(placement.angular_velocity));
+  // A brick moving more than its half thickness in one step could pass through
+  // a thin neighbour; continuous collision catches that case only.
+  const double thinnest_half = type.halfExtents().minCoeff();
+  body->setCcdMotionThreshold(thinnest_half);
+  body->setCcdSweptSphereRadius(0.5 * thinnest_half);
+  if (!impl_->options.sleeping.enabled) body->setActivationState(DISABLE_DEACTIVATION);
+  body->setUserIndex(static_cast<int>(handle));
+  if (impl_->bodies.size() <= handle) impl_->bodies.resize(handle + 1);
+  impl_->bodies[handle].rigid = std::move(body);
+  addToWorld(handle);
+}
+
+void BulletScene::removeBrick(BodyHandle handle) {
+  removeFromWorld(handle);
+  impl_->body(handle).rigid.reset();
+}
+
+void BulletScene::addToWorld(BodyHandle handle) {
+  Impl::Body& body = impl_->body(handle);
+  if (body.in_world) return;
+  impl_->world->addRigidBody(body.rigid.get());
+  body.in_world = true;
+}
+
+void BulletScene::removeFromWorld(BodyHandle handle) {
+  Impl::Body& body = impl_->body(handle);
+  if (!body.in_world) return;
+  impl_->world->removeRigidBody(body.rigid.get());
+  body.in_world = false;
+}
+
+bool BulletScene::inWorld(BodyHandle handle) const { return impl_->body(handle).in_world; }
+
+void BulletScene::makeDynamic(BodyHandle handle, const BrickType& type) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.setCollisionFlags(body.getCollisionFlags() & ~btCollisionObject::CF_KINEMATIC_OBJECT);
+  body.setMassProps(type.mass, convertEigenToBt(type.inertia));
+  body.updateInertiaTensor();
+  body.setLinearVelocity(btVector3(0, 0, 0));
+  body.setAngularVelocity(btVector3(0, 0, 0));
+}
+
+void BulletScene::makeStatic(BodyHandle handle) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.setCollisionFlags(body.getCollisionFlags() & ~btCollisionObject::CF_KINEMATIC_OBJECT);
+  body.setLinearVelocity(btVector3(0, 0, 0));
+  body.setAngularVelocity(btVector3(0, 0, 0));
+  body.setMassProps(0.0, btVector3(0, 0, 0));  // also sets CF_STATIC_OBJECT
+  body.updateInertiaTensor();
+  body.clearForces();
+}
+
+void BulletScene::makeKinematic(BodyHandle handle) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.setLinearVelocity(btVector3(0, 0, 0));
+  body.setAngularVelocity(btVector3(0, 0, 0));
+  body.setMassProps(0.0, btVector3(0, 0, 0));
+  body.updateInertiaTensor();
+  body.clearForces();
+  body.setCollisionFlags((body.getCollisionFlags() & ~btCollisionObject::CF_STATIC_OBJECT) |
+                         btCollisionObject::CF_KINEMATIC_OBJECT);
+  // Bullet computes a kinematic body's velocity from its motion each step,
+  // and only while it is awake.
+  body.forceActivationState(DISABLE_DEACTIVATION);
+}
+
+BodyDynamics BulletScene::dynamics(BodyHandle handle) const {
+  const btRigidBody& body = impl_->rigid(handle);
+  if (body.isKinematicObject()) return BodyDynamics::kKinematic;
+  return body.isStaticObject() ? BodyDynamics::kStatic : BodyDynamics::kDynamic;
+}
+
+void BulletScene::wakeUp(BodyHandle handle) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.forceActivationState(impl_->options.sleeping.enabled ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+  body.setDeactivationTime(0.0);
+}
+
+void BulletScene::activate(BodyHandle handle) { impl_->rigid(handle).activate(true); }
+bool BulletScene::isActive(BodyHandle handle) const { return impl_->rigid(handle).isActive(); }
+
+Eigen::Isometry3d BulletScene::pose(BodyHandle handle) const {
+  return convertBtToEigen(impl_->rigid(handle).getWorldTransform());
+}
+
+Eigen::Vector3d BulletScene::centreOfMass(BodyHandle handle) const {
+  return convertBtToEigen(impl_->rigid(handle).getCenterOfMassPosition());
+}
+
+Eigen::Vector3d BulletScene::linearVelocity(BodyHandle handle) const {
+  return convertBtToEigen(impl_->rigid(handle).getLinearVelocity());
+}
+
+Eigen::Vector3d BulletScene::angularVelocity(BodyHandle handle) const {
+  return convertBtToEigen(impl_->rigid(handle).getAngularVelocity());
+}
+
+double BulletScene::linearSpeed(BodyHandle handle) const {
+  return impl_->rigid(handle).getLinearVelocity().length();
+}
+
+double BulletScene::angularSpeed(BodyHandle handle) const {
+  return impl_->rigid(handle).getAngularVelocity().length();
+}
+
+void BulletScene::bounds(BodyHandle handle, Eigen::Vector3d* low, Eigen::Vector3d* high) const {
+  btVector3 bt_low, bt_high;
+  impl_->rigid(handle).getAabb(bt_low, bt_high);
+  *low = convertBtToEigen(bt_low);
+  *high = convertBtToEigen(bt_high);
+}
+
+void BulletScene::restoreAtRest(BodyHandle handle, const Eigen::Isometry3d& pose) {
+  btRigidBody& body = impl_->rigid(handle);
+  const btTransform transform = convertEigenToBt(pose);
+  body.setWorldTransform(transform);
+  body.setInterpolationWorldTransform(transform);
+  body.setLinearVelocity(btVector3(0, 0, 0));
+  body.setAngularVelocity(btVector3(0, 0, 0));
+  body.clearForces();
+}
+
+void BulletScene::applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse,
+                               const Eigen::Vector3d& point) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.applyImpulse(convertEigenToBt(impulse),
+                    convertEigenToBt(point) - body.getCenterOfMassPosition());
+}
+
+void BulletScene::setKinematicTarget(BodyHandle handle, const Eigen::Isometry3d& pose) {
+  impl_->rigid(handle).setWorldTransform(convertEigenToBt(pose));
+}
+
+void BulletScene::step(double dt) {
+  // maxSubSteps = 0: exactly one step of exactly dt, no interpolation.
+  impl_->world->stepSimulation(dt, 0, dt);
+}
+
+const btCollisionDispatcher& BulletScene::dispatcher() const { return *impl_->dispatcher; }
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,99 @@
+#pragma once
+// The only face of Bullet to the rest of the core: bodies are named by
+// BodyHandle and speak Eigen. Files that include a Bullet header live in this
+// folder; this header includes none.
+
+#include <cstdint>
+#include <memory>
+
+#include <Eigen/Geometry>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/world/world_options.h"
+#include "stability/body_handle.h"
+
+class btCollisionDispatcher;
+
+namespace brick_stack_sim {
+
+/// How Bullet treats a body.
+enum class BodyDynamics : unsigned char {
+  kDynamic,    ///< Simulated: mass, velocity, gravity.
+  kStatic,     ///< A collider without mass (a frozen brick).
+  kKinematic,  ///< Moved from outside; pushes what it touches (a held brick).
+};
+
+/// Bullet's dynamics world for bricks on a table, in double precision, tuned
+/// for 8 mm bricks (the reason for each setting is next to it in the .cpp):
+/// the table (a finite box whose top face is z = 0) and a floor under it, and
+/// one rigid body per brick. A body exists from addBrick() to removeBrick();
+/// whether Bullet's world holds it (steps it, or collides with it) is a
+/// separate matter, decided by the caller.
+class BulletScene {
+ public:
+  explicit BulletScene(const WorldOptions& options);
+  ~BulletScene();
+  BulletScene(const BulletScene&) = delete;
+  BulletScene& operator=(const BulletScene&) = delete;
+
+  /// Creates a dynamic body at the placement's pose and velocities [m, m/s,
+  /// rad/s] and adds it to Bullet's world. Handles are brick serials: dense.
+  void addBrick(BodyHandle handle, const BrickType& type, const BrickPlacement& placement);
+  /// Takes the body out of Bullet's world and destroys it.
+  void removeBrick(BodyHandle handle);
+
+  void addToWorld(BodyHandle handle);       ///< No-op when already in.
+  void removeFromWorld(BodyHandle handle);  ///< No-op when not in.
+  bool inWorld(BodyHandle handle) const;
+
+  // A body changes dynamics only while out of Bullet's world: Bullet files
+  // static, kinematic and dynamic bodies in different broadphase groups when
+  // they are added.
+  /// Mass and inertia of its type back, at rest.
+  void makeDynamic(BodyHandle handle, const BrickType& type);
+  /// At rest, without mass: a collider that never moves.
+  void makeStatic(BodyHandle handle);
+  /// Without mass, moved by setKinematicTarget(), never put to sleep.
+  void makeKinematic(BodyHandle handle);
+  BodyDynamics dynamics(BodyHandle handle) const;
+
+  /// Makes a dynamic body active now (sleeping allowed again later only when
+  /// the world sleeps at all), as a just-woken brick needs.
+  void wakeUp(BodyHandle handle);
+  /// Bullet's activate(true): a sleeping body joins the next step.
+  void activate(BodyHandle handle);
+  bool isActive(BodyHandle handle) const;
+
+  Eigen::Isometry3d pose(BodyHandle handle) const;           ///< [m], world
+  Eigen::Vector3d centreOfMass(BodyHandle handle) const;     ///< [m], world
+  Eigen::Vector3d linearVelocity(BodyHandle handle) const;   ///< [m/s]
+  Eigen::Vector3d angularVelocity(BodyHandle handle) const;  ///< [rad/s]
+  /// Speeds in Bullet's own arithmetic, so thresholds compare the same bits
+  /// whether Bullet or Eigen holds the vector [m/s], [rad/s].
+  double linearSpeed(BodyHandle handle) const;
+  double angularSpeed(BodyHandle handle) const;
+  /// The body's bounding box at its pose, collision margin included [m].
+  void bounds(BodyHandle handle, Eigen::Vector3d* low, Eigen::Vector3d* high) const;
+
+  /// Puts the body back at `pose`, at rest and without pending forces (the
+  /// numerical guard's repair).
+  void restoreAtRest(BodyHandle handle, const Eigen::Isometry3d& pose);
+  /// An impulse [N s] at a world point [m].
+  void applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse,
+                    const Eigen::Vector3d& point);
+  /// The pose a kinematic body reaches at the end of the next step.
+  void setKinematicTarget(BodyHandle handle, const Eigen::Isometry3d& pose);
+
+  /// Exactly one step of `dt` [s]: no substeps, no interpolation.
+  void step(double dt);
+
+  /// The contact manifolds of the last step, for the contact reader.
+  const btCollisionDispatcher& dispatcher() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace brick_stack_sim

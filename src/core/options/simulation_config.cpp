@@ -1,0 +1,74 @@
+#include "brick_stack_sim/core/options/simulation_config.h"
+
+#include "brick_stack_sim/core/options/options_reader.h"
+#include "brick_stack_sim/core/options/yaml_parameters.h"
+#include "util/text_format.h"
+#include "util/validation.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
+  PublishOptions publish = *options;
+  reader.read("publish_rate", &publish.rate);
+  reader.read("publish_clock", &publish.clock);
+  reader.read("real_time_factor", &publish.real_time_factor);
+  reader.read("frame_id", &publish.frame_id);
+  if (!reader.ok()) return reader.finish();
+  if (Status valid = validate(publish); !valid) return reader.named(valid);
+  *options = publish;
+  return Status::success();
+}
+
+Status readDataOptions(OptionsReader& reader, DataOptions* options) {
+  DataOptions data = *options;
+  reader.read("types_urdf", &data.types_urdf);
+  reader.read("materials_yaml", &data.materials_yaml);
+  reader.read("scene_dirs", &data.scene_dirs);
+  reader.read("scene", &data.scene);
+  if (!reader.ok()) return reader.finish();
+  *options = data;
+  return Status::success();
+}
+
+}  // namespace
+
+Status validate(const PublishOptions& p) {
+  // Above 10 kHz of sim time a subscriber learns nothing more and the node
+  // spends its time serialising.
+  if (!positive(p.rate) || p.rate > 10000.0)
+    return bad("publish_rate", p.rate, "must be in (0, 10000] Hz");
+  if (!std::isfinite(p.real_time_factor) || p.real_time_factor < 0.0 || p.real_time_factor > 1e6)
+    return bad("real_time_factor", p.real_time_factor,
+               "must be in [0, 1e6] (0: as fast as possible)");
+  // tf2 refuses frame ids with a leading slash; an empty one matches nothing.
+  if (p.frame_id.empty() || p.frame_id.front() == '/' ||
+      p.frame_id.find_first_of(" \t\n") != std::string::npos)
+    return bad("frame_id", "'" + p.frame_id + "'",
+               "must be a non-empty tf frame id without a leading '/' or spaces");
+  return Status::success();
+}
+
+Status readSimulationConfig(OptionsReader& reader, SimulationConfig* config) {
+  SimulationConfig result = *config;
+  if (Status world = readWorldOptions(reader, &result.world); !world) return world;
+  if (Status data = readDataOptions(reader, &result.data); !data) return data;
+  if (Status publish = readPublishOptions(reader, &result.publish); !publish) return publish;
+  if (Status known = reader.finish(); !known) return known;
+  *config = std::move(result);
+  return Status::success();
+}
+
+Status loadSimulationConfig(const std::vector<std::string>& yaml_paths, SimulationConfig* config) {
+  ParameterValue tree;
+  for (const std::string& path : yaml_paths) {
+    ParameterValue file;
+    if (Status loaded = loadYamlParameters(path, &file); !loaded) return loaded;
+    tree.merge(file);
+  }
+  OptionsReader reader(tree);
+  return prefixed(joinNames(yaml_paths) + ": parameter ", readSimulationConfig(reader, config));
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,79 @@
+#include "stability/com_criterion.h"
+
+#include <map>
+
+#include "brick_stack_sim/core/geometry/load_distribution.h"
+#include "stability/support_evaluation.h"
+#include "stability/support_graph.h"
+#include "util/text_format.h"
+
+namespace brick_stack_sim {
+
+ComCriterion::ComCriterion(const StabilityOptions& options, BodyNamer name_of)
+    : options_(options), name_of_(std::move(name_of)) {}
+
+void ComCriterion::evaluate(const BodyMotion& brick, BrickStability* stability) const {
+  evaluateSupport(brick.com, stability);
+}
+
+bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stability,
+                          FreezeDecision* decision) const {
+  if (stability.supports.empty() || stability.margin <= options_.min_margin) return false;
+  *decision = FreezeDecision{brick.handle, BrickState::kStable, stability.margin, {}, ""};
+  std::string on;
+  for (const SupportPatch& patch : stability.supports) {
+    decision->supporters.push_back(patch.supporter);
+    on += (on.empty() ? "" : ", ") + name_of_(patch.supporter);
+  }
+  decision->reason = "rests stably on " + on + " (margin " + millimetres(stability.margin) + ")";
+  return true;
+}
+
+WakeDecision ComCriterion::outsideSupport(BodyHandle brick, double margin) const {
+  return WakeDecision{brick, WakeCause::kOutsideSupport, brick, margin,
+                      "COM-above left its support: margin " + millimetres(margin)};
+}
+
+std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
+                                              const std::vector<BodyHandle>& load_order) const {
+  std::map<BodyHandle, std::vector<LoadShare>> received;
+  std::vector<WakeDecision> unstable;
+  std::vector<LoadShare> shares;
+  for (BodyHandle handle : load_order) {
+    SupportGraph::Node& node = *graph->find(handle);
+    // COM-above: the resultant of its own weight and the loads it receives,
+    // each where it acts. Heights only place the marker ray: mass-weighted.
+    double mass = node.mass;
+    Eigen::Vector3d moment = node.mass * node.com;
+    for (const LoadShare& load : received[handle]) {
+      mass += load.mass;
+      moment.head<2>() += load.mass * load.point;
+    }
+    Eigen::Vector3d com_above = moment / mass;
+    com_above.z() = node.com.z();
+    node.stability.frozen = true;
+    node.stability.mass_above = mass;
+    node.stability.supports = node.supports;
+    evaluateSupport(com_above, &node.stability);
+    node.supports = node.stability.supports;  // keep the hulls
+    if (node.stability.margin <= options_.min_margin) {
+      unstable.push_back(outsideSupport(handle, node.stability.margin));
+      continue;
+    }
+    std::vector<Polygon2d> patches;
+    for (const SupportPatch& patch : node.supports) patches.push_back(patch.hull);
+    if (distributeLoad(mass, com_above.head<2>(), patches, &shares) ==
+        LoadSplitRule::kUnsupported) {
+      unstable.push_back(outsideSupport(handle, node.stability.margin));
+      continue;
+    }
+    for (std::size_t i = 0; i < node.supports.size(); ++i) {
+      const BodyHandle supporter = node.supports[i].supporter;
+      if (!graph->contains(supporter)) continue;  // the table carries anything
+      received[supporter].push_back(shares[i]);
+    }
+  }
+  return unstable;
+}
+
+}  // namespace brick_stack_sim

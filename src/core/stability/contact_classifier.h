@@ -1,0 +1,45 @@
+#pragma once
+// Which contacts carry a brick: the classification every freezing model
+// shares (thesis 3.3.1).
+
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "stability/stability_model.h"
+
+namespace brick_stack_sim {
+
+class SupportGraph;
+
+/// A step's contacts by the bodies they touch; contacts without points are
+/// left out.
+class ContactIndex {
+ public:
+  explicit ContactIndex(const std::vector<PairContact>* contacts);
+  const std::vector<const PairContact*>& of(BodyHandle handle) const;
+
+ private:
+  std::unordered_map<BodyHandle, std::vector<const PairContact*>> by_body_;
+};
+
+/// The support patches of `body` among its `contacts`: one per supporter,
+/// from the contacts whose normal is within `support_normal_tolerance` of
+/// vertical with `body` on top, whose supporter is frozen or the ground (a
+/// stack cannot start on a moving brick) and that do not close faster than
+/// `impact_speed` (an impact is not support). In supporter order.
+std::vector<SupportPatch> supportPatches(const BodyMotion& body,
+                                         const std::vector<const PairContact*>& contacts,
+                                         const SupportGraph& graph,
+                                         const StabilityOptions& options);
+
+/// Where two faces rest flush (parallel within `flush_angle`), the patch is
+/// their exact overlap rather than the points Bullet kept: its box-box
+/// clipper keeps only penetrating points, so a brick tilted by a
+/// micro-radian reports half its patch. Applied to the contacts whose normal
+/// is within `support_normal_tolerance` of vertical; `box_of` gives a body's box.
+void refineFlushPatches(const std::function<OrientedBox(BodyHandle)>& box_of,
+                        const StabilityOptions& options, std::vector<PairContact>* contacts);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,27 @@
+#include "stability/rest_tracker.h"
+
+namespace brick_stack_sim {
+
+bool RestTracker::atRest(const BodyMotion& body) const {
+  return body.linear_velocity.norm() < options_.rest_linear_speed &&
+         body.angular_velocity.norm() < options_.rest_angular_speed;
+}
+
+RestTracker::Mover& RestTracker::advance(const BodyMotion& body, double dt) {
+  Mover& mover = movers_[body.handle];
+  mover.rest_time = atRest(body) ? mover.rest_time + dt : 0.0;
+  return mover;
+}
+
+RestTracker::Mover& RestTracker::restart(BodyHandle handle) {
+  Mover& mover = movers_[handle];
+  mover = Mover();
+  return mover;
+}
+
+const RestTracker::Mover* RestTracker::find(BodyHandle handle) const {
+  auto found = movers_.find(handle);
+  return found == movers_.end() ? nullptr : &found->second;
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <map>
+
+#include "stability/stability_model.h"
+
+namespace brick_stack_sim {
+
+/// How long each moving brick has been at rest (thesis 3.3.2), and what the
+/// model last found about its supports while it moves.
+class RestTracker {
+ public:
+  struct Mover {
+    double rest_time = 0.0;  ///< [s] below both rest speeds, without a break.
+    BrickStability stability;
+  };
+
+  explicit RestTracker(const StabilityOptions& options) : options_(options) {}
+
+  /// Whether `body` is slower than both rest speeds.
+  bool atRest(const BodyMotion& body) const;
+  /// One step of `dt` [s] for `body`: its rest time grows while it is at
+  /// rest and starts over when it is not.
+  Mover& advance(const BodyMotion& body, double dt);
+  /// The record of `handle`, a fresh one when it has none.
+  Mover& record(BodyHandle handle) { return movers_[handle]; }
+  /// Starts `handle` over, carrying only itself (a brick just woken).
+  Mover& restart(BodyHandle handle);
+  const Mover* find(BodyHandle handle) const;
+  void erase(BodyHandle handle) { movers_.erase(handle); }
+
+ private:
+  StabilityOptions options_;
+  std::map<BodyHandle, Mover> movers_;
+};
+
+}  // namespace brick_stack_sim

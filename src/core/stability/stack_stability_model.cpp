@@ -1,0 +1,184 @@
+#include "stability/stack_stability_model.h"
+
+#include <algorithm>
+
+#include "stability/contact_classifier.h"
+
+namespace brick_stack_sim {
+
+StackStabilityModel::StackStabilityModel(const StabilityOptions& options, BodyNamer name_of,
+                                         std::unique_ptr<StabilityCriterion> criterion)
+    : options_(options),
+      name_of_(std::move(name_of)),
+      criterion_(std::move(criterion)),
+      rest_(options) {}
+
+void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions* decisions) {
+  for (BodyHandle removed : input.removed) forget(removed, decisions);
+  for (BodyHandle pushed : input.pushed) {
+    if (graph_.contains(pushed))
+      wakeWithLoad(WakeDecision{pushed, WakeCause::kPushed, pushed, 0.0, "pushed"}, &graph_, &rest_,
+                   decisions);
+  }
+  for (const RestingPlacement& placed : input.placed) placeAtRest(placed, decisions);
+  advanceMovers(input, decisions);
+  settle(&graph_, &rest_, decisions);
+}
+
+void StackStabilityModel::forget(BodyHandle brick, StabilityDecisions* decisions) {
+  rest_.erase(brick);
+  for (BodyHandle upper : graph_.erase(brick)) {
+    wakeWithLoad(WakeDecision{upper, WakeCause::kSupporterRemoved, brick, 0.0,
+                              "its supporter " + name_of_(brick) + " was removed"},
+                 &graph_, &rest_, decisions);
+  }
+}
+
+bool StackStabilityModel::evaluateMover(const BodyMotion& body,
+                                        const std::vector<const PairContact*>& contacts,
+                                        BrickStability* stability, FreezeDecision* decision) const {
+  stability->supports = supportPatches(body, contacts, graph_, options_);
+  criterion_->evaluate(body, stability);
+  return criterion_->admits(body, *stability, decision);
+}
+
+void StackStabilityModel::placeAtRest(const RestingPlacement& placed,
+                                      StabilityDecisions* decisions) {
+  const ContactIndex index(&placed.contacts);
+  BrickStability& stability = rest_.record(placed.brick.handle).stability;
+  stability = BrickStability();
+  stability.mass_above = placed.brick.mass;
+  FreezeDecision decision;
+  if (evaluateMover(placed.brick, index.of(placed.brick.handle), &stability, &decision))
+    freeze(placed.brick, std::move(decision), stability.supports, decisions);
+}
+
+void StackStabilityModel::advanceMovers(const StabilityInput& input,
+                                        StabilityDecisions* decisions) {
+  const ContactIndex index(input.contacts);
+  std::vector<const BodyMotion*> resting;
+  for (const BodyMotion& body : input.movers) {
+    RestTracker::Mover& mover = rest_.advance(body, input.dt);
+    mover.stability = BrickStability();
+    mover.stability.mass_above = body.mass;
+    // A moving brick cannot join the stack; its supports are not worth a hull.
+    if (rest_.atRest(body))
+      mover.stability.supports = supportPatches(body, index.of(body.handle), graph_, options_);
+    criterion_->evaluate(body, &mover.stability);
+    if (mover.rest_time >= options_.rest_time) resting.push_back(&body);
+  }
+  // A brick at rest on one that freezes now may freeze in the same step: a
+  // stack placed at once joins from the bottom up without a step per layer.
+  for (bool froze = true; froze;) {
+    froze = false;
+    for (const BodyMotion*& body : resting) {
+      if (!body) continue;
+      BrickStability& stability = rest_.record(body->handle).stability;
+      FreezeDecision decision;
+      if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) continue;
+      freeze(*body, std::move(decision), stability.supports, decisions);
+      body = nullptr;
+      froze = true;
+    }
+  }
+}
+
+void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision,
+                                 std::vector<SupportPatch> supports,
+                                 StabilityDecisions* decisions) {
+  graph_.add(body.handle, body.com, body.mass, std::move(supports));
+  rest_.erase(body.handle);
+  decisions->freeze.push_back(std::move(decision));
+}
+
+void StackStabilityModel::wakeWithLoad(const WakeDecision& first, SupportGraph* graph,
+                                       RestTracker* rest, StabilityDecisions* decisions) const {
+  for (SupportGraph::Detached& detached : graph->detachWithLoad(first.brick)) {
+    if (rest) {
+      // Until its next step it carries only itself, where it was frozen.
+      RestTracker::Mover& mover = rest->restart(detached.brick);
+      mover.stability.com_above = detached.node.com;
+      mover.stability.mass_above = detached.node.mass;
+    }
+    if (detached.brick == first.brick) {
+      decisions->wake.push_back(first);
+    } else {
+      decisions->wake.push_back(
+          WakeDecision{detached.brick, WakeCause::kCarried, detached.carried_by, 0.0,
+                       "carried by " + name_of_(detached.carried_by) + ", which was woken"});
+    }
+  }
+}
+
+void StackStabilityModel::settle(SupportGraph* graph, RestTracker* rest,
+                                 StabilityDecisions* decisions) const {
+  // Each round wakes at least one brick or finds nothing: it ends.
+  while (graph->hasChanges()) {
+    std::vector<WakeDecision> unstable;
+    for (const std::vector<BodyHandle>& component : graph->takeChangedComponents()) {
+      if (component.empty()) continue;
+      std::vector<BodyHandle> order, cyclic;
+      graph->loadOrder(component, &order, &cyclic);
+      std::vector<WakeDecision> found = criterion_->check(graph, order);
+      unstable.insert(unstable.end(), found.begin(), found.end());
+      // No order in which loads flow down: nothing can be said to carry them.
+      for (BodyHandle handle : cyclic)
+        unstable.push_back(WakeDecision{handle, WakeCause::kSupportCycle, handle, 0.0,
+                                        "its supports form a cycle"});
+    }
+    for (const WakeDecision& decision : unstable) wakeWithLoad(decision, graph, rest, decisions);
+  }
+}
+
+PlacementEvaluation StackStabilityModel::evaluatePlacement(
+    const BodyMotion& brick, const std::vector<PairContact>& contacts) const {
+  PlacementEvaluation result;
+  const ContactIndex index(&contacts);
+  BrickStability stability;
+  stability.mass_above = brick.mass;
+  FreezeDecision decision;
+  const bool admitted = evaluateMover(brick, index.of(brick.handle), &stability, &decision);
+  result.margin = stability.margin;
+  for (const SupportPatch& patch : stability.supports) result.supporters.push_back(patch.supporter);
+  if (!admitted) {
+    result.reason =
+        stability.supports.empty()
+            ? "it would rest on nothing that is frozen or the ground"
+            : "it would not rest stably: margin " + std::to_string(stability.margin) + " m";
+    return result;
+  }
+  // Its load on the stack below, judged on a copy of the components it joins.
+  SupportGraph what_if = graph_.componentsOf(result.supporters);
+  what_if.add(brick.handle, brick.com, brick.mass, stability.supports);
+  StabilityDecisions consequences;
+  settle(&what_if, nullptr, &consequences);
+  for (const WakeDecision& woken : consequences.wake)
+    if (woken.brick != brick.handle) result.would_fall.push_back(woken.brick);
+  std::sort(result.would_fall.begin(), result.would_fall.end());
+  const bool itself_falls =
+      std::any_of(consequences.wake.begin(), consequences.wake.end(),
+                  [&](const WakeDecision& woken) { return woken.brick == brick.handle; });
+  result.stable = !itself_falls && result.would_fall.empty();
+  result.kind = result.stable ? decision.kind : BrickState::kDynamic;
+  if (result.stable) {
+    result.reason = decision.reason;
+  } else {
+    const WakeDecision& first = consequences.wake.front();
+    result.reason = "its load would tip " + name_of_(first.brick) + ": " + first.reason;
+  }
+  return result;
+}
+
+bool StackStabilityModel::describe(BodyHandle brick, BrickStability* stability) const {
+  if (const SupportGraph::Node* node = graph_.find(brick)) {
+    *stability = node->stability;
+    return true;
+  }
+  if (const RestTracker::Mover* mover = rest_.find(brick)) {
+    *stability = mover->stability;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace brick_stack_sim

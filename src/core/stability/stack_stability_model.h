@@ -1,0 +1,57 @@
+#pragma once
+
+#include <memory>
+
+#include "stability/rest_tracker.h"
+#include "stability/stability_criterion.h"
+#include "stability/stability_model.h"
+#include "stability/support_graph.h"
+
+namespace brick_stack_sim {
+
+/// A stability model that freezes bricks into a support graph (thesis 3.3),
+/// with the rule for stable and unstable left to a criterion. A moving brick
+/// at rest for `rest_time` on frozen bricks or the ground joins the stack
+/// when the criterion admits it; whenever a component of the graph changes,
+/// the criterion judges it, and a brick it finds unstable is woken with
+/// everything it carries, until nothing changes (waking a counterweight can
+/// tip a brick below).
+class StackStabilityModel : public StabilityModel {
+ public:
+  StackStabilityModel(const StabilityOptions& options, BodyNamer name_of,
+                      std::unique_ptr<StabilityCriterion> criterion);
+
+  void decide(const StabilityInput& input, StabilityDecisions* decisions) override;
+  PlacementEvaluation evaluatePlacement(const BodyMotion& brick,
+                                        const std::vector<PairContact>& contacts) const override;
+  bool describe(BodyHandle brick, BrickStability* stability) const override;
+
+ private:
+  /// A brick left the world: what it carried wakes.
+  void forget(BodyHandle brick, StabilityDecisions* decisions);
+  /// A brick placed at rest joins at once when the criterion admits it.
+  void placeAtRest(const RestingPlacement& placed, StabilityDecisions* decisions);
+  /// The step's movers: rest times, candidate supports, and freezing from the
+  /// bottom up (a brick at rest on one that freezes now may freeze too).
+  void advanceMovers(const StabilityInput& input, StabilityDecisions* decisions);
+  /// Evaluates `body` on its supports among `contacts` into `stability`;
+  /// true (and `decision`) when the criterion admits it.
+  bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
+                     BrickStability* stability, FreezeDecision* decision) const;
+  void freeze(const BodyMotion& body, FreezeDecision decision, std::vector<SupportPatch> supports,
+              StabilityDecisions* decisions);
+  /// Wakes `first.brick` and everything it carries; `rest` (when given)
+  /// starts each over as a mover.
+  void wakeWithLoad(const WakeDecision& first, SupportGraph* graph, RestTracker* rest,
+                    StabilityDecisions* decisions) const;
+  /// Judges the changed components of `graph` until nothing changes.
+  void settle(SupportGraph* graph, RestTracker* rest, StabilityDecisions* decisions) const;
+
+  StabilityOptions options_;
+  BodyNamer name_of_;
+  std::unique_ptr<StabilityCriterion> criterion_;
+  SupportGraph graph_;
+  RestTracker rest_;
+};
+
+}  // namespace brick_stack_sim

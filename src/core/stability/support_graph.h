@@ -1,0 +1,75 @@
+#pragma once
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include "stability/stability_model.h"
+
+namespace brick_stack_sim {
+
+/// The frozen bricks and what rests on what (thesis 3.3): each frozen brick
+/// with its support patches and the frozen bricks it carries. Every freezing
+/// model keeps one; a criterion judges its components. It knows which
+/// bricks changed since the last judgement (dirty), the components they
+/// belong to, the order in which loads flow down, and takes a brick out with
+/// everything it carries.
+class SupportGraph {
+ public:
+  /// A frozen brick: where it rests and what the last check found.
+  struct Node {
+    Eigen::Vector3d com = Eigen::Vector3d::Zero();  ///< [m]
+    double mass = 0.0;                              ///< [kg]
+    std::vector<SupportPatch> supports;  ///< One patch per supporter, in supporter order.
+    std::set<BodyHandle> carries;        ///< Frozen bricks resting on it.
+    BrickStability stability;
+  };
+
+  /// A brick taken out with the load it carried, and why.
+  struct Detached {
+    BodyHandle brick = 0;
+    BodyHandle carried_by = 0;  ///< For all but the first: the detached brick it rested on.
+    Node node;
+  };
+
+  bool contains(BodyHandle brick) const { return nodes_.count(brick) > 0; }
+  const Node* find(BodyHandle brick) const;
+  Node* find(BodyHandle brick);
+  /// Frozen, or the table or floor: what a brick may rest on to join the stack.
+  bool canSupport(BodyHandle handle) const { return isGround(handle) || contains(handle); }
+  std::size_t size() const { return nodes_.size(); }
+
+  /// `brick` joins, linked under its frozen supporters; its component is dirty.
+  void add(BodyHandle brick, const Eigen::Vector3d& com, double mass,
+           std::vector<SupportPatch> supports);
+  /// Takes `brick` and, breadth first, everything it carries out of the
+  /// graph, in the order they leave; their supporters that stay are dirty
+  /// (their load changed). Empty when `brick` is not in the graph.
+  std::vector<Detached> detachWithLoad(BodyHandle brick);
+  /// Takes `brick` alone out (it leaves the world); returns what it carried,
+  /// which stays in the graph without its support.
+  std::set<BodyHandle> erase(BodyHandle brick);
+
+  bool hasChanges() const { return !dirty_.empty(); }
+  /// The components holding a brick that changed since the last call, each
+  /// in handle order; forgets the changes.
+  std::vector<std::vector<BodyHandle>> takeChangedComponents();
+  /// The order in which loads flow down a component: every brick after all
+  /// it carries. Bricks on a cycle of supports have no such order; they are
+  /// left out of `order` and listed in `cyclic`, in handle order.
+  void loadOrder(const std::vector<BodyHandle>& component, std::vector<BodyHandle>* order,
+                 std::vector<BodyHandle>* cyclic) const;
+  /// A copy of the components that hold `seeds` (the part a what-if query
+  /// can touch), with no pending changes.
+  SupportGraph componentsOf(const std::vector<BodyHandle>& seeds) const;
+
+ private:
+  std::vector<BodyHandle> componentOf(BodyHandle start, std::set<BodyHandle>* seen) const;
+  /// Unlinks `brick` from its supporters, which become dirty.
+  void unlinkFromSupporters(BodyHandle brick, const Node& node);
+
+  std::map<BodyHandle, Node> nodes_;
+  std::set<BodyHandle> dirty_;
+};
+
+}  // namespace brick_stack_sim

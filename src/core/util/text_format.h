@@ -1,0 +1,35 @@
+#pragma once
+// How the core writes numbers into the messages and reasons people read.
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace brick_stack_sim {
+
+/// "(x, y, z)" with six significant digits.
+inline std::string formatVector(const Eigen::Vector3d& v) {
+  std::ostringstream text;
+  text.precision(6);
+  text << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return text.str();
+}
+
+/// A length given in metres, written in millimetres: "1.25 mm".
+inline std::string millimetres(double metres) {
+  std::ostringstream text;
+  text.precision(3);
+  text << metres * 1000.0 << " mm";
+  return text.str();
+}
+
+/// "a, b, c".
+inline std::string joinNames(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,113 @@
+#include "world/brick_sets.h"
+
+#include <algorithm>
+
+#include "bullet/bullet_scene.h"
+#include "bullet/dormant_colliders.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+bool bySerial(const BrickRecord* a, const BrickRecord* b) { return a->handle < b->handle; }
+
+void erase(std::vector<BrickRecord*>* set, const BrickRecord* brick) {
+  auto position = std::find(set->begin(), set->end(), brick);
+  if (position != set->end()) set->erase(position);
+}
+
+}  // namespace
+
+void BrickSets::enter(BrickRecord* brick) {
+  brick->mode = BrickMode::kDynamic;
+  movers_.push_back(brick);
+}
+
+void BrickSets::leaveSet(BrickRecord* brick) {
+  if (isFrozen(brick->mode)) {
+    dormant_->remove(brick->handle);  // out of the tree and of Bullet's world
+  } else {
+    scene_->removeFromWorld(brick->handle);
+    erase(brick->mode == BrickMode::kHeld ? &held_ : &movers_, brick);
+  }
+}
+
+void BrickSets::enterSet(BrickRecord* brick, BrickMode mode) {
+  // Bullet files a body by its dynamics when it is added to the world: each
+  // change happens while the body is out of it.
+  switch (mode) {
+    case BrickMode::kDynamic:
+      scene_->makeDynamic(brick->handle, brick->type);
+      scene_->addToWorld(brick->handle);
+      scene_->wakeUp(brick->handle);
+      brick->last_good_pose = scene_->pose(brick->handle);
+      movers_.insert(std::lower_bound(movers_.begin(), movers_.end(), brick, bySerial), brick);
+      break;
+    case BrickMode::kFrozenStable:
+    case BrickMode::kFrozenLeaning:
+      scene_->makeStatic(brick->handle);
+      dormant_->add(brick->handle);
+      break;
+    case BrickMode::kHeld:
+      scene_->makeKinematic(brick->handle);
+      scene_->addToWorld(brick->handle);
+      held_.push_back(brick);
+      break;
+  }
+}
+
+void BrickSets::transfer(BrickRecord* brick, BrickMode mode) {
+  if (mode == brick->mode) return;
+  if (isFrozen(mode) && isFrozen(brick->mode)) {  // the same set and body either way
+    brick->mode = mode;
+    return;
+  }
+  leaveSet(brick);
+  enterSet(brick, mode);
+  brick->mode = mode;
+}
+
+void BrickSets::leave(BrickRecord* brick) { leaveSet(brick); }
+
+Status BrickSets::checkInvariants(const std::vector<const BrickRecord*>& bricks) const {
+  if (!std::is_sorted(movers_.begin(), movers_.end(), bySerial))
+    return Status::error("the movers are not in placement order");
+  std::size_t dynamic = 0, frozen = 0, held = 0;
+  for (const BrickRecord* brick : bricks) {
+    const BodyHandle h = brick->handle;
+    const auto in = [brick](const std::vector<BrickRecord*>& set) {
+      return std::count(set.begin(), set.end(), brick);
+    };
+    const bool in_dormant = dormant_->contains(h);
+    const auto in_world_list =
+        std::count(dormant_->inWorld().begin(), dormant_->inWorld().end(), h);
+    bool consistent = false;
+    switch (brick->mode) {
+      case BrickMode::kDynamic:
+        ++dynamic;
+        consistent = in(movers_) == 1 && in(held_) == 0 && !in_dormant && scene_->inWorld(h) &&
+                     scene_->dynamics(h) == BodyDynamics::kDynamic;
+        break;
+      case BrickMode::kFrozenStable:
+      case BrickMode::kFrozenLeaning:
+        ++frozen;
+        consistent = in(movers_) == 0 && in(held_) == 0 && in_dormant &&
+                     scene_->dynamics(h) == BodyDynamics::kStatic &&
+                     scene_->inWorld(h) == (in_world_list == 1);
+        break;
+      case BrickMode::kHeld:
+        ++held;
+        consistent = in(movers_) == 0 && in(held_) == 1 && !in_dormant && scene_->inWorld(h) &&
+                     scene_->dynamics(h) == BodyDynamics::kKinematic;
+        break;
+    }
+    if (!consistent)
+      return Status::error("brick '" + brick->id + "' in mode " + toString(brick->mode) +
+                           " is not in the sets its mode implies");
+  }
+  if (dynamic != movers_.size() || held != held_.size() || frozen != dormant_->size())
+    return Status::error("the sets hold bricks the world does not know");
+  return Status::success();
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,105 @@
+#include "world/placement_check.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "util/text_format.h"
+#include "world/world_state.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+constexpr std::size_t kMaxIdLength = 128;
+/// A moving brick within this of a placement's bounds is checked for overlap [m].
+constexpr double kNearby = 1e-3;
+
+bool validId(const std::string& id) {
+  if (id.empty() || id.size() > kMaxIdLength) return false;
+  if (!std::isalpha(static_cast<unsigned char>(id[0]))) return false;
+  return std::all_of(id.begin(), id.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+}
+
+}  // namespace
+
+Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
+  if (!p.id.empty()) {
+    if (!validId(p.id))
+      return Status::error("id '" + p.id +
+                           "' is not valid: use a letter then letters, digits, '_' or '-' "
+                           "(at most 128 characters)");
+    if (p.id == "table" || p.id == "world") return Status::error("id '" + p.id + "' is reserved");
+    if (w.bricks.find(p.id)) return Status::error("id '" + p.id + "' is already in use");
+  }
+  const std::string type_name = p.type.empty() ? w.types.defaultType() : p.type;
+  const BrickType* type = w.types.find(type_name);
+  if (!type)
+    return Status::error("unknown brick type '" + type_name +
+                         "' (known: " + joinNames(w.types.names()) + ")");
+  if (!p.pose.translation().allFinite())
+    return Status::error("position is not finite: " + formatVector(p.pose.translation()));
+  if (!isRotation(p.pose.linear()))
+    return Status::error("orientation is not a proper rotation (NaN, Inf or not orthonormal)");
+  if (!p.linear_velocity.allFinite() || !p.angular_velocity.allFinite())
+    return Status::error("velocity is not finite");
+  if (p.linear_velocity.norm() > w.options.max_linear_speed)
+    return Status::error("linear speed " + std::to_string(p.linear_velocity.norm()) +
+                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
+  if (p.angular_velocity.norm() > w.options.max_angular_speed)
+    return Status::error("angular speed " + std::to_string(p.angular_velocity.norm()) +
+                         " rad/s exceeds the limit of " +
+                         std::to_string(w.options.max_angular_speed));
+
+  const OrientedBox box{p.pose, type->halfExtents()};
+  Eigen::Vector3d low = box.pose.translation(), high = low;
+  for (const Eigen::Vector3d& corner : corners(box)) {
+    low = low.cwiseMin(corner);
+    high = high.cwiseMax(corner);
+  }
+  if (low.z() < -w.options.overlap_tolerance)
+    return Status::error("pose puts the brick " + millimetres(-low.z()) +
+                         " below the table top (z = 0)");
+  // Candidates: every brick that is not frozen, and the frozen ones whose
+  // boxes come near, in placement order.
+  std::vector<BodyHandle> candidates;
+  for (const BrickRecord* brick : w.sets.movers()) candidates.push_back(brick->handle);
+  for (const BrickRecord* brick : w.sets.held()) candidates.push_back(brick->handle);
+  const Eigen::Vector3d nearby = Eigen::Vector3d::Constant(kNearby);
+  for (BodyHandle frozen : w.dormant.near(low - nearby, high + nearby))
+    candidates.push_back(frozen);
+  std::sort(candidates.begin(), candidates.end());
+  for (BodyHandle other : candidates) {
+    const double gap = separation(box, w.boxOf(other));
+    if (gap < -w.options.overlap_tolerance)
+      return Status::error("pose overlaps brick '" + w.nameOf(other) + "' by " + millimetres(-gap));
+  }
+  return Status::success();
+}
+
+std::vector<PairContact> restingContacts(const WorldState& w, BodyHandle brick,
+                                         const OrientedBox& box, const Eigen::Vector3d& low,
+                                         const Eigen::Vector3d& high) {
+  const double touching = w.options.stability.contact_distance;
+  std::vector<PairContact> supports;
+  auto try_support = [&](BodyHandle lower) {
+    const OrientedBox lower_box = w.boxOf(lower);
+    const double gap = separation(lower_box, box);
+    // Touching, not sunk in: an overlap the placement check let through is
+    // Bullet's to resolve before the brick can rest.
+    if (std::abs(gap) > touching) return;
+    PairContact contact;
+    contact.a = brick;
+    contact.b = lower;
+    if (flushContactPatch(lower_box, box, w.options.stability.flush_angle, touching,
+                          &contact.points))
+      supports.push_back(std::move(contact));
+  };
+  try_support(kTableHandle);
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(touching);
+  for (BodyHandle frozen : w.dormant.near(low - reach, high + reach)) try_support(frozen);
+  return supports;
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <vector>
+
+#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/status.h"
+#include "stability/contact.h"
+
+namespace brick_stack_sim {
+
+struct WorldState;
+
+/// Would the world accept this placement? The id (valid, not reserved, not
+/// in use), the type, finite numbers, a proper rotation, speeds within the
+/// limits, not below the table top and not inside another brick. The
+/// message names what is wrong and its value.
+Status checkPlacement(const WorldState& world, const BrickPlacement& placement);
+
+/// The flush supports of a brick resting at `box` (handle `brick`, whose
+/// bounds are `low`..`high` [m]) on the table and the frozen bricks, found
+/// from geometry: a brick placed at rest is judged before Bullet's first,
+/// unconverged steps can rock it.
+std::vector<PairContact> restingContacts(const WorldState& world, BodyHandle brick,
+                                         const OrientedBox& box, const Eigen::Vector3d& low,
+                                         const Eigen::Vector3d& high);
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,88 @@
+#include "world/world_state.h"
+
+#include <algorithm>
+
+namespace brick_stack_sim {
+
+BrickRecord* BrickRegistry::add(std::unique_ptr<BrickRecord> brick) {
+  BrickRecord* record = brick.get();
+  by_id_[record->id] = record;
+  by_handle_[record->handle] = record;
+  bricks_.push_back(std::move(brick));  // the newest serial: the end keeps the order
+  return record;
+}
+
+void BrickRegistry::erase(BrickRecord* brick) {
+  by_id_.erase(brick->id);
+  by_handle_.erase(brick->handle);
+  bricks_.erase(std::find_if(bricks_.begin(), bricks_.end(),
+                             [brick](const auto& entry) { return entry.get() == brick; }));
+}
+
+BrickRecord* BrickRegistry::find(const std::string& id) const {
+  auto found = by_id_.find(id);
+  return found == by_id_.end() ? nullptr : found->second;
+}
+
+BrickRecord* BrickRegistry::find(BodyHandle handle) const {
+  auto found = by_handle_.find(handle);
+  return found == by_handle_.end() ? nullptr : found->second;
+}
+
+std::vector<const BrickRecord*> BrickRegistry::records() const {
+  std::vector<const BrickRecord*> result;
+  result.reserve(bricks_.size());
+  for (const auto& brick : bricks_) result.push_back(brick.get());
+  return result;
+}
+
+std::string BrickRegistry::freeId(unsigned serial) const {
+  for (unsigned n = serial;; ++n) {
+    std::string candidate = "brick_" + std::to_string(n);
+    if (!by_id_.count(candidate)) return candidate;
+  }
+}
+
+WorldState::WorldState(const WorldOptions& world_options, const BrickTypeLibrary& brick_types,
+                       double start)
+    : options(world_options),
+      types(brick_types),
+      start_time(start),
+      scene(world_options),
+      dormant(&scene),
+      sets(&scene, &dormant) {}
+
+void WorldState::emit(SimEventKind kind, const std::string& id, std::string reason,
+                      std::vector<std::string> affected) {
+  events.push_back(SimEvent{time(), kind, id, std::move(reason), std::move(affected)});
+}
+
+std::string WorldState::nameOf(BodyHandle handle) const {
+  if (handle == kTableHandle) return "table";
+  if (handle == kFloorHandle) return "floor";
+  const BrickRecord* brick = bricks.find(handle);
+  return brick ? brick->id : "brick#" + std::to_string(handle);
+}
+
+OrientedBox WorldState::boxOf(BodyHandle handle) const {
+  OrientedBox box;
+  if (handle == kTableHandle) {
+    box.half_extents = Eigen::Vector3d(options.table.size.x() / 2, options.table.size.y() / 2,
+                                       options.table.thickness / 2);
+    box.pose.translation().z() = -options.table.thickness / 2;
+  } else if (handle == kFloorHandle) {
+    box.half_extents = Eigen::Vector3d(1e3, 1e3, 0.5);
+    box.pose.translation().z() = -options.table.height - 0.5;
+  } else {
+    box.pose = scene.pose(handle);
+    box.half_extents = bricks.find(handle)->type.halfExtents();
+  }
+  return box;
+}
+
+BodyMotion WorldState::motionOf(const BrickRecord& brick) const {
+  return BodyMotion{brick.handle, scene.centreOfMass(brick.handle), brick.type.mass,
+                    scene.linearVelocity(brick.handle), scene.angularVelocity(brick.handle)};
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,71 @@
+#pragma once
+// Everything a BrickWorld holds, shared by the files that implement it (the
+// staged step, the placement check, the numerical guard), as Box2D's
+// b2World is shared by its stages. Not part of the public interface.
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/world/brick_world.h"
+#include "bullet/bullet_scene.h"
+#include "bullet/dormant_colliders.h"
+#include "stability/stability_model.h"
+#include "world/brick_record.h"
+#include "world/brick_sets.h"
+
+namespace brick_stack_sim {
+
+/// The bricks by id and handle, in placement order.
+class BrickRegistry {
+ public:
+  BrickRecord* add(std::unique_ptr<BrickRecord> brick);
+  void erase(BrickRecord* brick);
+  BrickRecord* find(const std::string& id) const;
+  BrickRecord* find(BodyHandle handle) const;
+  const std::vector<std::unique_ptr<BrickRecord>>& all() const { return bricks_; }
+  std::vector<const BrickRecord*> records() const;
+  std::size_t size() const { return bricks_.size(); }
+  /// The first free id of the form brick_<n>, n from `serial` up.
+  std::string freeId(unsigned serial) const;
+
+ private:
+  std::vector<std::unique_ptr<BrickRecord>> bricks_;
+  std::unordered_map<std::string, BrickRecord*> by_id_;
+  std::unordered_map<BodyHandle, BrickRecord*> by_handle_;
+};
+
+struct WorldState {
+  WorldState(const WorldOptions& world_options, const BrickTypeLibrary& brick_types, double start);
+
+  WorldOptions options;
+  BrickTypeLibrary types;
+  double start_time = 0.0;  ///< Sim time of step 0 [s]: worlds that replace one go on from it.
+  BulletScene scene;
+  DormantColliders dormant;
+  BrickSets sets;
+  BrickRegistry bricks;
+  std::unique_ptr<StabilityModel> model;  ///< Null in mode none.
+  std::vector<PairContact> contacts;      ///< Of the last Bullet step.
+  /// The model has something new to look at without a Bullet step: a brick
+  /// placed, removed, frozen or woken.
+  bool model_changed = false;
+  unsigned next_serial = 0;
+  CostCounters cost;
+  std::vector<SimEvent> events;
+
+  double time() const { return start_time + static_cast<double>(cost.steps) * options.time_step; }
+  void emit(SimEventKind kind, const std::string& id, std::string reason,
+            std::vector<std::string> affected = {});
+  /// A brick's id, "table", "floor", or "brick#<n>" for a handle no brick has.
+  std::string nameOf(BodyHandle handle) const;
+  /// The box of a brick (its pose in Bullet), of the table, or of the floor
+  /// as a slab far wider than anything that can land on it.
+  OrientedBox boxOf(BodyHandle handle) const;
+  /// What the model is told of a brick now.
+  BodyMotion motionOf(const BrickRecord& brick) const;
+};
+
+}  // namespace brick_stack_sim
