@@ -21,7 +21,6 @@
 #include "brick_stack_sim/StepSimulation.h"
 
 namespace brick_stack_sim {
-namespace ros_adapter {
 namespace test {
 
 class NodeFixture : public ::testing::Test {
@@ -93,5 +92,4 @@ class NodeFixture : public ::testing::Test {
 };
 
 }  // namespace test
-}  // namespace ros_adapter
 }  // namespace brick_stack_sim

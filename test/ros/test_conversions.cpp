@@ -12,7 +12,7 @@
 
 #include "brick_stack_sim/ros/conversions.h"
 #include "brick_stack_sim/ros/markers.h"
-#include "com_world.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -185,7 +185,7 @@ TEST(Conversions, SnapshotToMessageRoundTrip) {
 // The stability fields of Brick.msg as the real stability layer fills them:
 // a two-layer tower, each value from hand statics.
 TEST(Conversions, FrozenTowerBricksAreStableWithTheirSupportsAndLoads) {
-  auto world = test::makeComWorld();
+  auto world = test::makeWorld(test::optionsFor("com"));
   for (int i = 0; i < 4; ++i) ASSERT_TRUE(world->addBrick(test::towerBrick(i)).ok) << i;
   BrickPlacement falling = test::towerBrick(0);
   falling.id = "falling";

@@ -10,7 +10,7 @@
 
 #include "brick_stack_sim/core/geometry/polygon2d.h"
 #include "brick_stack_sim/ros/markers.h"
-#include "com_world.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -107,7 +107,7 @@ SupportGeometry squareSupport(const Eigen::Vector3d& com_above, double half, dou
 }
 
 TEST(StabilityMarkers, StableBrickOnTheTableHasAGreenRayDownToTheTable) {
-  auto world = test::makeComWorld();
+  auto world = test::makeWorld(test::optionsFor("com"));
   BrickPlacement placement;
   placement.id = "lone";
   placement.pose.translation() = Eigen::Vector3d(0.1, -0.05, test::kKaplaThickness / 2);
@@ -292,7 +292,7 @@ TEST(StabilityMarkers, NoNaNReachesAMarker) {
 // A two-layer tower from the real world: every brick STABLE, with the support
 // graph and load the statics give, all of it in the markers and the messages.
 TEST(StabilityMarkers, FrozenTowerFromTheWorld) {
-  auto world = test::makeComWorld();
+  auto world = test::makeWorld(test::optionsFor("com"));
   for (int i = 0; i < 4; ++i) ASSERT_TRUE(world->addBrick(test::towerBrick(i)).ok) << i;
   test::runFor(world.get(), 0.2);
   const std::vector<BrickSnapshot> bricks = world->snapshot();

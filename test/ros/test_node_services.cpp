@@ -29,7 +29,7 @@ using namespace brick_stack_sim;
 constexpr double kHalfHeight = 0.0039;  ///< Half a KAPLA thickness [m]: a brick lying on the table.
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-class NodeServices : public ros_adapter::test::NodeFixture {
+class NodeServices : public test::NodeFixture {
  protected:
   void SetUp() override {
     NodeFixture::SetUp();

@@ -20,13 +20,13 @@
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StabilityEvent.h"
 #include "brick_stack_sim/core/world/world_options.h"
-#include "com_world.h"
 #include "node_fixture.h"
+#include "support/kapla.h"
 
 namespace {
 
 using namespace brick_stack_sim;
-using ros_adapter::test::kKaplaThickness;
+using test::kKaplaThickness;
 using visualization_msgs::Marker;
 using visualization_msgs::MarkerArray;
 
@@ -37,7 +37,7 @@ std::vector<std::string> sorted(std::vector<std::string> ids) {
   return ids;
 }
 
-class StabilityNode : public ros_adapter::test::NodeFixture {
+class StabilityNode : public test::NodeFixture {
  protected:
   void SetUp() override {
     NodeFixture::SetUp();
@@ -67,7 +67,7 @@ class StabilityNode : public ros_adapter::test::NodeFixture {
 
   /// Brick `slot` (0 or 1) of `layer` of the core's tower generator.
   bool placeTowerBrick(const std::string& id, int layer, int slot) {
-    const ros_adapter::test::TowerSlot s = ros_adapter::test::towerSlot(layer, slot);
+    const test::TowerSlot s = test::towerSlot(layer, slot);
     return place(id, s.x, s.y, s.z, s.yaw);
   }
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/brick_type.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {

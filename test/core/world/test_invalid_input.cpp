@@ -4,8 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/stability/stability_modes.h"
 #include "brick_stack_sim/core/world/brick_world.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -119,7 +120,7 @@ TEST_P(InvalidInput, NonFiniteImpulse) {
   expectRefused(world_->applyImpulse("base", {0, 0.02, 0}, {1.0, 0, 0.0039}), "spinning");
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, InvalidInput, ::testing::Values("none", "com"),
+INSTANTIATE_TEST_SUITE_P(Modes, InvalidInput, ::testing::ValuesIn(availableStabilityModes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });

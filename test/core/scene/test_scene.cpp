@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/scene/generators.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {

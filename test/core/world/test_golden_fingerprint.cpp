@@ -4,6 +4,7 @@
 // that says why. The hashes hold for this platform's build (Debian 12 x86-64,
 // Bullet 3.24 float64, g++ 12): a different compiler or Bullet may round
 // differently, which is a new platform, not a regression.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -15,8 +16,9 @@
 
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/scene/scene_player.h"
+#include "brick_stack_sim/core/stability/stability_modes.h"
 #include "brick_stack_sim/core/world/brick_world.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -168,6 +170,20 @@ TEST(GoldenFingerprint, EveryModeOfEverySceneEndsBitForBitAsPinned) {
       std::snprintf(text, sizeof text, "0x%016llxULL", static_cast<unsigned long long>(hash));
       EXPECT_EQ(hash, expected.hash)
           << scene.name << " in mode " << expected.mode << " now hashes to " << text;
+    }
+  }
+}
+
+TEST(GoldenFingerprint, EveryModeOfTheRegistryIsPinned) {
+  // A mode added to the registry gets its hashes pinned here in the commit
+  // that adds it, so every later change of its behaviour shows.
+  for (const std::string& mode : availableStabilityModes()) {
+    for (const GoldenScene& scene : goldenScenes()) {
+      const bool pinned =
+          std::any_of(std::begin(kExpected), std::end(kExpected), [&](const Expected& expected) {
+            return expected.scene == scene.name && expected.mode == mode;
+          });
+      EXPECT_TRUE(pinned) << scene.name << " in mode " << mode << " has no pinned hash";
     }
   }
 }

@@ -1,102 +1,20 @@
+// The command line of stack_sim_run, parsed and run for real.
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/tools/run_command_line.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {
-
-Scene loadPackageScene(const std::string& name) {
-  Scene scene;
-  const Status s = loadScene(name, {test::dataPath("scenes")}, test::packageTypes(), &scene);
-  EXPECT_TRUE(s.ok) << s.message;
-  return scene;
-}
-
-/// The report without its two wall-clock entries, which no two runs share.
-std::string withoutWallTime(std::string json) {
-  std::size_t start = json.find("\"wall_time\": ");
-  json.erase(start, json.find(',', start) - start);
-  start = json.find("\"stage_seconds\": ");
-  return json.erase(start, json.find('}', start) + 1 - start);
-}
-
-TEST(BatchRunner, ReportHasTheContractKeys) {
-  RunOptions options;
-  options.world.stability.mode = "none";  // a brick in plain Bullet: dynamic, awake every step
-  options.duration = 0.2;
-  RunReport report;
-  ASSERT_TRUE(runScene(loadPackageScene("single_drop"), test::packageTypes(), options, &report).ok);
-  const std::string json = toJson(report);
-  for (const char* key : {"\"scene\": \"single_drop\"",
-                          "\"mode\": \"none\"",
-                          "\"time_step\": ",
-                          "\"iterations\": 20",
-                          "\"sim_time\": ",
-                          "\"wall_time\": ",
-                          "\"steps\": 200",
-                          "\"nonfinite\": 0",
-                          "\"cost\": {\"bullet_steps\": 200, \"awake_brick_steps\": 200",
-                          "\"stage_seconds\": {",
-                          "\"bricks\": [",
-                          "\"id\": \"b0\"",
-                          "\"type\": \"kapla\"",
-                          "\"placed_at\": 0",
-                          "\"position\": [",
-                          "\"orientation\": [",
-                          "\"state\": \"dynamic\"",
-                          "\"displacement\": ",
-                          "\"rotation\": ",
-                          "\"events\": [",
-                          "\"kind\": \"spawned\""}) {
-    EXPECT_NE(json.find(key), std::string::npos) << "missing " << key << " in " << json;
-  }
-  EXPECT_NEAR(report.sim_time, 0.2, 1e-12);
-}
-
-TEST(BatchRunner, PlacesBricksAtTheirTimes) {
-  Scene scene = loadPackageScene("tower25_built");
-  RunOptions options;
-  options.duration = 3.0;
-  RunReport report;
-  ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &report).ok);
-  ASSERT_EQ(report.bricks.size(), 4u);  // at 0, 1, 2 and 3 s
-  EXPECT_NEAR(report.bricks[3].brick.placed_at, 3.0, 0.5e-3);
-  EXPECT_TRUE(report.refused.empty());
-}
-
-TEST(BatchRunner, SameSceneTwiceGivesTheSameReport) {
-  Scene scene = loadPackageScene("tower10");
-  RunOptions options;
-  options.duration = 1.0;
-  options.world.sleeping.enabled = false;
-  RunReport first, second;
-  ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &first).ok);
-  ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &second).ok);
-  EXPECT_EQ(withoutWallTime(toJson(first)), withoutWallTime(toJson(second)));
-}
-
-TEST(BatchRunner, RefusedPlacementIsReportedNotLost) {
-  Scene scene;
-  ASSERT_TRUE(parseScene("bricks:\n"
-                         "  - {id: a, at: 0.0, position: [0, 0, 0.0039]}\n"
-                         "  - {id: b, at: 0.1, position: [0.01, 0, 0.0039]}\n",
-                         "clash", test::packageTypes(), &scene)
-                  .ok);
-  RunOptions options;
-  options.duration = 0.2;
-  RunReport report;
-  ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &report).ok);
-  ASSERT_EQ(report.refused.size(), 1u);
-  EXPECT_EQ(report.refused[0].id, "b");
-  EXPECT_NE(report.refused[0].reason.find("overlaps brick 'a'"), std::string::npos);
-  EXPECT_NE(toJson(report).find("\"refused\": [{"), std::string::npos);
-}
 
 TEST(RunCommandLine, ParsesTheDocumentedFlags) {
   RunCommandLine cli;
@@ -268,6 +186,17 @@ TEST(StackSimRun, WritesTheReportAndFailsClearlyOnBadInput) {
   text << report.rdbuf();
   EXPECT_NE(text.str().find("\"scene\": \"single_drop\""), std::string::npos);
   EXPECT_NE(output.find("largest displacement"), std::string::npos) << output;
+
+  // The node's own yaml, as DESIGN.md's runner promises.
+  ASSERT_EQ(runExecutable("--config " + test::dataPath("config/stability.yaml") +
+                              " --scene single_drop --duration 0.2 --report " + report_path,
+                          &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("mode com"), std::string::npos) << output;
+  const std::string typo = writeYaml("run_typo.yaml", "stability: {mdoe: none}\n");
+  EXPECT_NE(runExecutable("--config " + typo + " --scene single_drop", &output), 0);
+  EXPECT_NE(output.find("stability/mdoe"), std::string::npos) << output;
 
   EXPECT_NE(runExecutable("--scene no_such_scene", &output), 0);
   EXPECT_NE(output.find("unknown scene 'no_such_scene'"), std::string::npos) << output;

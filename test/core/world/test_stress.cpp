@@ -6,7 +6,8 @@
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
-#include "test_support.h"
+#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -24,6 +25,8 @@ void expectFiniteAndComplete(const BrickWorld& world, std::size_t bricks) {
     EXPECT_TRUE(b.com_above.allFinite() && std::isfinite(b.margin)) << b.id;
   }
   EXPECT_EQ(world.cost().nonfinite, 0u);
+  const Status consistent = world.checkInvariants();
+  EXPECT_TRUE(consistent.ok) << consistent.message;
 }
 
 class StressByMode : public ::testing::TestWithParam<std::string> {
@@ -120,7 +123,7 @@ TEST_P(StressByMode, SamePileTwiceGivesBitIdenticalReports) {
   EXPECT_EQ(first.events.size(), second.events.size());
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, StressByMode, ::testing::Values("none", "com"),
+INSTANTIATE_TEST_SUITE_P(Modes, StressByMode, ::testing::ValuesIn(availableStabilityModes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });

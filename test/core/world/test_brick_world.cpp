@@ -2,10 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/world/simulation.h"
-
 #include "brick_stack_sim/core/world/brick_world.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -87,27 +85,6 @@ TEST(BrickWorld, RemovingTheLowerBrickWakesTheUpperOneWhichFalls) {
   EXPECT_NEAR(high.pose.translation().z(), kKaplaThickness / 2, 0.2e-3);
   EXPECT_EQ(world->brickCount(), 1u);
   EXPECT_FALSE(world->find("low", nullptr));
-}
-
-TEST(Simulation, ResetEmptiesTheTableButTimeGoesOn) {
-  std::unique_ptr<Simulation> simulation;
-  ASSERT_TRUE(Simulation::create(test::plainBulletOptions(), test::packageTypes(), &simulation).ok);
-  ASSERT_TRUE(simulation->world().addBrick(placement("a", {0, 0, 0.0039})).ok);
-  for (int i = 0; i < 100; ++i) simulation->step();
-  const double before = simulation->time();
-  ASSERT_TRUE(simulation->reset(Scene()).ok);
-  EXPECT_EQ(simulation->world().brickCount(), 0u);
-  EXPECT_DOUBLE_EQ(simulation->time(), before);
-  const std::vector<SimEvent> events = simulation->takeEvents();
-  ASSERT_EQ(events.size(), 2u);  // spawned, then removed by the reset
-  EXPECT_EQ(events[1].kind, SimEventKind::kRemoved);
-  EXPECT_EQ(events[1].reason, "scene reset");
-  EXPECT_DOUBLE_EQ(events[1].time, before);
-  simulation->step();
-  EXPECT_GT(simulation->time(), before);
-  std::string id;
-  ASSERT_TRUE(simulation->world().addBrick(placement("", {0, 0, 0.0039}), &id).ok);
-  EXPECT_EQ(id, "brick_0");
 }
 
 TEST(BrickWorld, BrickPushedOffTheTableIsReportedAndLandsOnTheFloor) {

@@ -10,7 +10,7 @@
 
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/scene/generators.h"
-#include "test_support.h"
+#include "support/kapla.h"
 
 namespace brick_stack_sim {
 namespace {

@@ -1,0 +1,61 @@
+// The contact reader against statics: a brick resting on the table is held
+// up by normal impulses that add up to its weight times the step, along a
+// vertical normal, at a depth within the collision tolerance, with the
+// geometric mean of the two friction coefficients.
+#include <cmath>
+#include <numeric>
+
+#include <gtest/gtest.h>
+
+#include "bullet/bullet_scene.h"
+#include "bullet/contact_reader.h"
+#include "support/kapla.h"
+
+namespace brick_stack_sim {
+namespace {
+
+TEST(ContactReader, ARestingBrickCarriesItsWeightThroughTheTable) {
+  WorldOptions options;
+  options.table.friction = 0.8;
+  BulletScene scene(options);
+  const BrickType kapla = *test::packageTypes().find("kapla");
+  scene.addBrick(0, kapla, test::placement("b0", {0.05, -0.02, test::kKaplaThickness / 2}));
+  for (int i = 0; i < 1000; ++i) scene.step(options.time_step);
+  std::vector<PairContact> contacts;
+  readContacts(scene, options.stability.contact_distance, &contacts);
+  ASSERT_EQ(contacts.size(), 1u);
+  const PairContact& pair = contacts[0];
+  const BodyHandle other = pair.a == 0 ? pair.b : pair.a;
+  EXPECT_EQ(other, kTableHandle);
+  // The normal points from b to a: up when the brick is a.
+  const double up = pair.a == 0 ? 1.0 : -1.0;
+  EXPECT_NEAR(pair.normal.z(), up, 1e-9);
+  ASSERT_EQ(pair.manifold.size(), 4u);  // the box-box clipper: the face's corners
+  ASSERT_EQ(pair.points.size(), pair.manifold.size());
+  double impulse = 0.0;
+  for (const ContactPoint& point : pair.manifold) {
+    EXPECT_NEAR(point.normal.z(), up, 1e-9);
+    EXPECT_LT(std::abs(point.depth), 1e-4);
+    EXPECT_NEAR(point.position.z(), 0.0, 1e-4);
+    impulse += point.impulse;
+  }
+  // Statics: the table pushes up with the brick's weight, m g, for one step.
+  EXPECT_NEAR(impulse, kapla.mass * options.gravity * options.time_step,
+              1e-4 * kapla.mass * options.gravity * options.time_step);
+  EXPECT_NEAR(pair.friction, std::sqrt(kapla.friction * 0.8), 1e-12);
+  EXPECT_LT(pair.approach_speed, 1e-3);
+}
+
+TEST(ContactReader, BodiesApartAreNoContact) {
+  WorldOptions options;
+  BulletScene scene(options);
+  const BrickType kapla = *test::packageTypes().find("kapla");
+  scene.addBrick(0, kapla, test::placement("b0", {0, 0, 0.1}));
+  scene.step(options.time_step);
+  std::vector<PairContact> contacts(3);
+  readContacts(scene, options.stability.contact_distance, &contacts);
+  EXPECT_TRUE(contacts.empty());
+}
+
+}  // namespace
+}  // namespace brick_stack_sim

@@ -1,0 +1,270 @@
+// Every stability model of the registry, driven with the same synthetic
+// motions and contacts (no Bullet), so that models can be compared on
+// identical inputs. Expectations come from statics: a brick whose centre of
+// mass lies over its support patch stands, one whose centre lies past it
+// cannot, and a load on a cantilever tips it when the common centre of mass
+// passes the edge it overhangs.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "stability/stability_registry.h"
+#include "support/kapla.h"
+
+namespace brick_stack_sim {
+namespace {
+
+using test::kKaplaLength;
+using test::kKaplaMass;
+using test::kKaplaThickness;
+using test::kKaplaWidth;
+
+/// The modes of the registry that run a model (all but plain Bullet).
+std::vector<std::string> modelModes() {
+  std::vector<std::string> modes;
+  for (const std::string& mode : availableStabilityModes()) {
+    if (createStabilityModel(test::optionsFor(mode).stability, [](BodyHandle) { return ""; }))
+      modes.push_back(mode);
+  }
+  return modes;
+}
+
+std::string nameOf(BodyHandle handle) {
+  return isGround(handle) ? "table" : "b" + std::to_string(handle);
+}
+
+/// A KAPLA along x (or along y when `crosswise`) at rest with its centre at
+/// (x, y) and its bottom face at height `bottom` [m].
+BodyMotion kapla(BodyHandle handle, double x, double y, double bottom) {
+  return BodyMotion{handle, Eigen::Vector3d(x, y, bottom + kKaplaThickness / 2), kKaplaMass,
+                    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+}
+
+/// `upper` resting on `lower` over the rectangle x0..x1, y0..y1 at height z.
+PairContact resting(BodyHandle upper, BodyHandle lower, double x0, double x1, double y0, double y1,
+                    double z) {
+  PairContact contact;
+  contact.a = upper;
+  contact.b = lower;
+  contact.normal = Eigen::Vector3d::UnitZ();
+  contact.points = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
+  contact.friction = 0.5;
+  return contact;
+}
+
+/// Brick b along x at (x, 0) on the table: its whole bottom face touches.
+PairContact onTable(BodyHandle b, double x) {
+  return resting(b, kTableHandle, x - kKaplaLength / 2, x + kKaplaLength / 2, -kKaplaWidth / 2,
+                 kKaplaWidth / 2, 0.0);
+}
+
+class ModelConformance : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    options_ = test::optionsFor(GetParam()).stability;
+    model_ = createStabilityModel(options_, &nameOf);
+    ASSERT_NE(model_, nullptr);
+  }
+
+  /// Steps of 1 ms with these movers and contacts until `seconds` have passed.
+  StabilityDecisions stepFor(double seconds, const std::vector<BodyMotion>& movers,
+                             const std::vector<PairContact>& contacts) {
+    StabilityDecisions all;
+    const int steps = static_cast<int>(std::lround(seconds / 1e-3));
+    for (int i = 0; i < steps; ++i) {
+      StabilityInput input;
+      input.dt = 1e-3;
+      input.contacts = &contacts;
+      // Frozen bricks leave the movers, as they leave Bullet.
+      for (const BodyMotion& mover : movers)
+        if (!frozen(mover.handle)) input.movers.push_back(mover);
+      StabilityDecisions decisions;
+      model_->decide(input, &decisions);
+      append(decisions, &all);
+    }
+    return all;
+  }
+
+  StabilityDecisions request(const StabilityInput& input) {
+    StabilityDecisions decisions;
+    model_->decide(input, &decisions);
+    append(decisions, &all_);
+    return decisions;
+  }
+
+  bool frozen(BodyHandle brick) const {
+    BrickStability stability;
+    return model_->describe(brick, &stability) && stability.frozen;
+  }
+
+  /// b0 along x frozen on the table with its centre `inside` [m] before the
+  /// table's edge at x = `edge`: a cantilever overhanging the edge.
+  void freezeCantilever(double edge, double inside) {
+    const double x = edge - inside;
+    StabilityInput input;
+    input.placed.push_back({kapla(0, x, 0, 0),
+                            {resting(0, kTableHandle, x - kKaplaLength / 2, edge, -kKaplaWidth / 2,
+                                     kKaplaWidth / 2, 0.0)}});
+    ASSERT_EQ(request(input).freeze.size(), 1u);
+  }
+
+  static void append(const StabilityDecisions& more, StabilityDecisions* all) {
+    all->freeze.insert(all->freeze.end(), more.freeze.begin(), more.freeze.end());
+    all->wake.insert(all->wake.end(), more.wake.begin(), more.wake.end());
+  }
+
+  StabilityOptions options_;
+  std::unique_ptr<StabilityModel> model_;
+  StabilityDecisions all_;
+};
+
+TEST_P(ModelConformance, BrickAtRestOnTheTableFreezesOnceItHasRested) {
+  const std::vector<PairContact> contacts = {onTable(0, 0.0)};
+  const std::vector<BodyMotion> movers = {kapla(0, 0.0, 0, 0)};
+  EXPECT_TRUE(stepFor(options_.rest_time / 2, movers, contacts).freeze.empty())
+      << "frozen before it had rested for rest_time";
+  const StabilityDecisions decisions = stepFor(options_.rest_time, movers, contacts);
+  ASSERT_EQ(decisions.freeze.size(), 1u);
+  const FreezeDecision& freeze = decisions.freeze[0];
+  EXPECT_EQ(freeze.brick, 0u);
+  EXPECT_TRUE(freeze.kind == BrickState::kStable || freeze.kind == BrickState::kLeaning);
+  EXPECT_EQ(freeze.supporters, std::vector<BodyHandle>{kTableHandle});
+  EXPECT_NE(freeze.reason.find("table"), std::string::npos) << freeze.reason;
+  EXPECT_TRUE(frozen(0));
+}
+
+TEST_P(ModelConformance, CentreOfMassPastItsSupportNeverFreezes) {
+  // The table's edge at x = 0.02 and the brick's centre at 0.03: it overhangs
+  // by more than half its length.
+  const std::vector<PairContact> contacts = {resting(0, kTableHandle, 0.03 - kKaplaLength / 2, 0.02,
+                                                     -kKaplaWidth / 2, kKaplaWidth / 2, 0)};
+  EXPECT_TRUE(stepFor(0.1, {kapla(0, 0.03, 0, 0)}, contacts).freeze.empty());
+  EXPECT_FALSE(frozen(0));
+}
+
+TEST_P(ModelConformance, MovingBricksAndBricksOnMovingOnesDoNotFreeze) {
+  BodyMotion sliding = kapla(0, 0.0, 0, 0);
+  sliding.linear_velocity.x() = 10 * options_.rest_linear_speed;
+  // b1 at rest on b0, which slides: a stack cannot start on a moving brick.
+  const std::vector<PairContact> contacts = {
+      onTable(0, 0.0),
+      resting(1, 0, -0.05, 0.05, -kKaplaWidth / 2, kKaplaWidth / 2, kKaplaThickness)};
+  const StabilityDecisions decisions =
+      stepFor(0.1, {sliding, kapla(1, 0.0, 0, kKaplaThickness)}, contacts);
+  EXPECT_TRUE(decisions.freeze.empty());
+}
+
+TEST_P(ModelConformance, AStackAtRestFreezesFromTheBottomUpInOneStep) {
+  const std::vector<PairContact> contacts = {
+      onTable(0, 0.0), resting(1, 0, -kKaplaLength / 2, kKaplaLength / 2, -kKaplaWidth / 2,
+                               kKaplaWidth / 2, kKaplaThickness)};
+  const StabilityDecisions decisions = stepFor(
+      2 * options_.rest_time, {kapla(0, 0, 0, 0), kapla(1, 0, 0, kKaplaThickness)}, contacts);
+  ASSERT_EQ(decisions.freeze.size(), 2u);
+  EXPECT_EQ(decisions.freeze[0].brick, 0u);
+  EXPECT_EQ(decisions.freeze[1].brick, 1u);
+  EXPECT_EQ(decisions.freeze[1].supporters, std::vector<BodyHandle>{0});
+}
+
+TEST_P(ModelConformance, RemovalAndPushesWakeWhatTheBrickCarried) {
+  for (BodyHandle b : {0u, 1u, 2u}) {
+    StabilityInput input;
+    input.placed.push_back(
+        {kapla(b, 0, 0, b * kKaplaThickness),
+         {resting(b, b == 0 ? kTableHandle : b - 1, -kKaplaLength / 2, kKaplaLength / 2,
+                  -kKaplaWidth / 2, kKaplaWidth / 2, b * kKaplaThickness)}});
+    ASSERT_EQ(request(input).freeze.size(), 1u) << "b" << b << " placed at rest";
+  }
+  StabilityInput push;
+  push.pushed = {1};
+  const StabilityDecisions pushed = request(push);
+  ASSERT_EQ(pushed.wake.size(), 2u);
+  EXPECT_EQ(pushed.wake[0].brick, 1u);
+  EXPECT_EQ(pushed.wake[0].cause, WakeCause::kPushed);
+  EXPECT_EQ(pushed.wake[1].brick, 2u);
+  EXPECT_EQ(pushed.wake[1].cause, WakeCause::kCarried);
+  EXPECT_NE(pushed.wake[1].reason.find("b1"), std::string::npos) << pushed.wake[1].reason;
+  EXPECT_TRUE(frozen(0));
+
+  StabilityInput removal;
+  removal.removed = {0};
+  EXPECT_TRUE(request(removal).wake.empty());  // nothing frozen rests on it any more
+  StabilityInput again;
+  again.pushed = {0};
+  EXPECT_TRUE(request(again).empty());  // it is gone: a push of it is no decision
+}
+
+TEST_P(ModelConformance, RemovingASupporterNamesItInTheWakeReason) {
+  for (BodyHandle b : {0u, 1u}) {
+    StabilityInput input;
+    input.placed.push_back(
+        {kapla(b, 0, 0, b * kKaplaThickness),
+         {resting(b, b == 0 ? kTableHandle : 0, -kKaplaLength / 2, kKaplaLength / 2,
+                  -kKaplaWidth / 2, kKaplaWidth / 2, b * kKaplaThickness)}});
+    request(input);
+  }
+  StabilityInput removal;
+  removal.removed = {0};
+  const StabilityDecisions decisions = request(removal);
+  ASSERT_EQ(decisions.wake.size(), 1u);
+  EXPECT_EQ(decisions.wake[0].brick, 1u);
+  EXPECT_EQ(decisions.wake[0].cause, WakeCause::kSupporterRemoved);
+  EXPECT_NE(decisions.wake[0].reason.find("b0"), std::string::npos) << decisions.wake[0].reason;
+}
+
+TEST_P(ModelConformance, ALoadPastTheCantileversEdgeTipsItAndOneShortOfItDoesNot) {
+  // b0 overhangs the table's edge at x = 0.6 with its centre 20 mm inside.
+  // A second KAPLA of the same mass on it, crosswise, centred at x moves the
+  // common centre of mass to (0.58 + x) / 2: over the table for x < 0.62,
+  // past the edge for x > 0.62 (statics of two equal masses).
+  freezeCantilever(0.6, 0.02);
+  auto place_on_top = [&](double x) { return kapla(1, x, 0, kKaplaThickness); };
+  auto top_contact = [&](double x) {
+    return resting(1, 0, x - kKaplaWidth / 2, x + kKaplaWidth / 2, -kKaplaWidth / 2,
+                   kKaplaWidth / 2, kKaplaThickness);
+  };
+  const PlacementEvaluation short_of =
+      model_->evaluatePlacement(place_on_top(0.61), {top_contact(0.61)});
+  EXPECT_TRUE(short_of.stable) << short_of.reason;
+  EXPECT_TRUE(short_of.would_fall.empty());
+  EXPECT_EQ(short_of.supporters, std::vector<BodyHandle>{0});
+  EXPECT_NEAR(short_of.margin, kKaplaWidth / 2, 1e-9);  // its own centre over its patch
+
+  const PlacementEvaluation past =
+      model_->evaluatePlacement(place_on_top(0.63), {top_contact(0.63)});
+  EXPECT_FALSE(past.stable);
+  EXPECT_EQ(past.would_fall, std::vector<BodyHandle>{0});
+  EXPECT_NE(past.reason.find("b0"), std::string::npos) << past.reason;
+
+  // Asking changed nothing: placing it for real now decides as statics says.
+  EXPECT_TRUE(frozen(0));
+  EXPECT_FALSE(frozen(1));
+  StabilityInput input;
+  input.placed.push_back({place_on_top(0.63), {top_contact(0.63)}});
+  const StabilityDecisions decisions = request(input);
+  ASSERT_EQ(decisions.freeze.size(), 1u);  // it rests stably on b0...
+  EXPECT_FALSE(frozen(0));                 // ...whose load then leaves the table
+  EXPECT_FALSE(frozen(1));
+  ASSERT_GE(decisions.wake.size(), 2u);
+  EXPECT_EQ(decisions.wake[0].brick, 0u);
+  EXPECT_EQ(decisions.wake[0].cause, WakeCause::kOutsideSupport);
+}
+
+TEST_P(ModelConformance, APlacementWithNothingFrozenUnderItIsNotStable) {
+  const PlacementEvaluation floating =
+      model_->evaluatePlacement(kapla(4, 0, 0, 0.05), std::vector<PairContact>{});
+  EXPECT_FALSE(floating.stable);
+  EXPECT_TRUE(floating.supporters.empty());
+  EXPECT_FALSE(floating.reason.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, ModelConformance, ::testing::ValuesIn(modelModes()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
+
+}  // namespace
+}  // namespace brick_stack_sim

@@ -1,0 +1,84 @@
+// The what-if of BrickWorld::evaluatePlacement against statics, in a real
+// world: a plank overhanging the table's edge carries a second plank as long
+// as their common centre of mass stays over the table.
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/world/brick_world.h"
+#include "support/kapla.h"
+
+namespace brick_stack_sim {
+namespace {
+
+using test::kKaplaThickness;
+using test::placement;
+
+constexpr double kEdge = 0.6;  ///< The default table's +x edge [m].
+/// The lower plank's centre: 20 mm inside the edge, 38.5 mm of it over the floor.
+constexpr double kLowerX = kEdge - 0.02;
+
+class PlacementEvaluation : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    world_ = test::makeWorld(test::optionsFor("com"));
+    ASSERT_TRUE(world_->addBrick(placement("low", {kLowerX, 0, kKaplaThickness / 2})).ok);
+    BrickSnapshot low;
+    ASSERT_TRUE(world_->find("low", &low));
+    ASSERT_EQ(low.state, BrickState::kStable);
+    world_->takeEvents();
+    before_ = test::fingerprint(*world_);
+  }
+
+  /// A plank crosswise on the lower one, centred at x [m].
+  static BrickPlacement onTop(double x) {
+    return placement("top", {x, 0, 1.5 * kKaplaThickness}, M_PI / 2);
+  }
+
+  std::unique_ptr<BrickWorld> world_;
+  std::string before_;
+};
+
+TEST_F(PlacementEvaluation, ALoadWhoseCommonCentreStaysOverTheTableIsStable) {
+  // Two equal masses at 0.58 and 0.615: their centre at 0.5975, 2.5 mm inside.
+  PlacementReport report;
+  ASSERT_TRUE(world_->evaluatePlacement(onTop(kLowerX + 0.035), &report).ok);
+  EXPECT_TRUE(report.stable) << report.reason;
+  EXPECT_EQ(report.state, BrickState::kStable);
+  EXPECT_EQ(report.supported_by, std::vector<std::string>{"low"});
+  EXPECT_TRUE(report.would_fall.empty());
+  EXPECT_NEAR(report.margin, test::kKaplaWidth / 2, 1e-6);
+  EXPECT_TRUE(test::fingerprint(*world_) == before_) << "a query changed the world";
+  EXPECT_TRUE(world_->takeEvents().empty());
+}
+
+TEST_F(PlacementEvaluation, ALoadThatMovesTheCommonCentrePastTheEdgeTipsTheLowerPlank) {
+  // 0.58 and 0.63: their centre at 0.605, 5 mm past the edge.
+  PlacementReport report;
+  ASSERT_TRUE(world_->evaluatePlacement(onTop(kLowerX + 0.05), &report).ok);
+  EXPECT_FALSE(report.stable);
+  EXPECT_EQ(report.would_fall, std::vector<std::string>{"low"});
+  EXPECT_NE(report.reason.find("low"), std::string::npos) << report.reason;
+  EXPECT_TRUE(test::fingerprint(*world_) == before_) << "a query changed the world";
+  // Placed for real, the lower plank is woken as the query said.
+  ASSERT_TRUE(world_->addBrick(onTop(kLowerX + 0.05)).ok);
+  BrickSnapshot low;
+  ASSERT_TRUE(world_->find("low", &low));
+  EXPECT_EQ(low.state, BrickState::kDynamic);
+}
+
+TEST_F(PlacementEvaluation, BadPlacementsAndPlainBulletAreRefused) {
+  PlacementReport report;
+  EXPECT_FALSE(world_->evaluatePlacement(placement("low", {0, 0.2, 0.0039}), &report).ok);
+  BrickPlacement inside = onTop(kLowerX);
+  inside.pose.translation().z() = kKaplaThickness / 2;  // inside the lower plank
+  const Status overlap = world_->evaluatePlacement(inside, &report);
+  EXPECT_FALSE(overlap.ok);
+  EXPECT_NE(overlap.message.find("overlaps"), std::string::npos) << overlap.message;
+  auto plain = test::makeWorld(test::plainBulletOptions());
+  const Status none = plain->evaluatePlacement(placement("a", {0, 0, 0.0039}), &report);
+  EXPECT_FALSE(none.ok);
+  EXPECT_NE(none.message.find("none"), std::string::npos) << none.message;
+  EXPECT_TRUE(test::fingerprint(*world_) == before_);
+}
+
+}  // namespace
+}  // namespace brick_stack_sim
