@@ -21,6 +21,9 @@ void readContacts(const BulletScene& scene, double contact_distance,
     PairContact pair;
     pair.a = handleOf(a);
     pair.b = handleOf(b);
+    // A manifold holds at most four points: one allocation each, not a growth.
+    pair.points.reserve(manifold->getNumContacts());
+    pair.manifold.reserve(manifold->getNumContacts());
     btVector3 normal_sum(0, 0, 0);
     for (int j = 0; j < manifold->getNumContacts(); ++j) {
       const btManifoldPoint& point = manifold->getContactPoint(j);
