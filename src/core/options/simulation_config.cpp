@@ -10,26 +10,20 @@ namespace brick_stack_sim {
 namespace {
 
 Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
-  PublishOptions publish = *options;
-  reader.read("publish_rate", &publish.rate);
-  reader.read("publish_clock", &publish.clock);
-  reader.read("real_time_factor", &publish.real_time_factor);
-  reader.read("frame_id", &publish.frame_id);
-  if (!reader.ok()) return reader.finish();
-  if (Status valid = validate(publish); !valid) return reader.named(valid);
-  *options = publish;
-  return Status::success();
+  return readAndValidate(reader, false, options, [&reader](PublishOptions& publish) {
+    reader.read("publish_rate", &publish.rate);
+    reader.read("publish_clock", &publish.clock);
+    reader.read("real_time_factor", &publish.real_time_factor);
+    reader.read("frame_id", &publish.frame_id);
+  });
 }
 
-Status readDataOptions(OptionsReader& reader, DataOptions* options) {
-  DataOptions data = *options;
-  reader.read("types_urdf", &data.types_urdf);
-  reader.read("materials_yaml", &data.materials_yaml);
-  reader.read("scene_dirs", &data.scene_dirs);
-  reader.read("scene", &data.scene);
-  if (!reader.ok()) return reader.finish();
-  *options = data;
-  return Status::success();
+/// Paths only: whether they can be read is found where they are used.
+void readDataOptions(OptionsReader& reader, DataOptions* data) {
+  reader.read("types_urdf", &data->types_urdf);
+  reader.read("materials_yaml", &data->materials_yaml);
+  reader.read("scene_dirs", &data->scene_dirs);
+  reader.read("scene", &data->scene);
 }
 
 }  // namespace
@@ -53,8 +47,9 @@ Status validate(const PublishOptions& p) {
 Status readSimulationConfig(OptionsReader& reader, SimulationConfig* config) {
   SimulationConfig result = *config;
   if (Status world = readWorldOptions(reader, &result.world); !world) return world;
-  if (Status data = readDataOptions(reader, &result.data); !data) return data;
   if (Status publish = readPublishOptions(reader, &result.publish); !publish) return publish;
+  readDataOptions(reader, &result.data);
+  // Wrong types of the data keys, and any key nobody read.
   if (Status known = reader.finish(); !known) return known;
   *config = std::move(result);
   return Status::success();

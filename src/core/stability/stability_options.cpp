@@ -30,20 +30,17 @@ Status validate(const StabilityOptions& s) {
 }
 
 Status readStabilityOptions(OptionsReader& reader, StabilityOptions* options) {
-  StabilityOptions stability = *options;
-  reader.read("mode", &stability.mode);
-  reader.read("rest_linear_speed", &stability.rest_linear_speed);
-  reader.read("rest_angular_speed", &stability.rest_angular_speed);
-  reader.read("rest_time", &stability.rest_time);
-  reader.read("impact_speed", &stability.impact_speed);
-  reader.read("support_normal_tolerance", &stability.support_normal_tolerance);
-  reader.read("flush_angle", &stability.flush_angle);
-  reader.read("contact_distance", &stability.contact_distance);
-  reader.read("min_margin", &stability.min_margin);
-  if (Status read = reader.finish(); !read) return read;
-  if (Status valid = validate(stability); !valid) return reader.named(valid);
-  *options = stability;
-  return Status::success();
+  return readAndValidate(reader, true, options, [&reader](StabilityOptions& stability) {
+    reader.read("mode", &stability.mode);
+    reader.read("rest_linear_speed", &stability.rest_linear_speed);
+    reader.read("rest_angular_speed", &stability.rest_angular_speed);
+    reader.read("rest_time", &stability.rest_time);
+    reader.read("impact_speed", &stability.impact_speed);
+    reader.read("support_normal_tolerance", &stability.support_normal_tolerance);
+    reader.read("flush_angle", &stability.flush_angle);
+    reader.read("contact_distance", &stability.contact_distance);
+    reader.read("min_margin", &stability.min_margin);
+  });
 }
 
 }  // namespace brick_stack_sim

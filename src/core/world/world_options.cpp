@@ -58,49 +58,40 @@ Status validate(const WorldOptions& o) {
 }
 
 Status readTableOptions(OptionsReader& reader, TableOptions* options) {
-  TableOptions table = *options;
-  reader.read("size", &table.size);
-  reader.read("thickness", &table.thickness);
-  reader.read("height", &table.height);
-  reader.read("friction", &table.friction);
-  reader.read("restitution", &table.restitution);
-  if (Status read = reader.finish(); !read) return read;
-  if (Status valid = validate(table); !valid) return reader.named(valid);
-  *options = table;
-  return Status::success();
+  return readAndValidate(reader, true, options, [&reader](TableOptions& table) {
+    reader.read("size", &table.size);
+    reader.read("thickness", &table.thickness);
+    reader.read("height", &table.height);
+    reader.read("friction", &table.friction);
+    reader.read("restitution", &table.restitution);
+  });
 }
 
 Status readSleepingOptions(OptionsReader& reader, SleepingOptions* options) {
-  SleepingOptions sleeping = *options;
-  reader.read("enabled", &sleeping.enabled);
-  reader.read("linear_threshold", &sleeping.linear_threshold);
-  reader.read("angular_threshold", &sleeping.angular_threshold);
-  reader.read("time", &sleeping.time);
-  if (Status read = reader.finish(); !read) return read;
-  if (Status valid = validate(sleeping); !valid) return reader.named(valid);
-  *options = sleeping;
-  return Status::success();
+  return readAndValidate(reader, true, options, [&reader](SleepingOptions& sleeping) {
+    reader.read("enabled", &sleeping.enabled);
+    reader.read("linear_threshold", &sleeping.linear_threshold);
+    reader.read("angular_threshold", &sleeping.angular_threshold);
+    reader.read("time", &sleeping.time);
+  });
 }
 
 Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
-  WorldOptions world = *options;
-  reader.read("time_step", &world.time_step);
-  reader.read("solver_iterations", &world.solver_iterations);
-  reader.read("gravity", &world.gravity);
-  reader.section("sleeping", &readSleepingOptions, &world.sleeping);
-  reader.read("split_impulse_penetration_threshold", &world.split_impulse_penetration_threshold);
-  reader.read("erp", &world.erp);
-  reader.read("collision_margin", &world.collision_margin);
-  reader.read("overlap_tolerance", &world.overlap_tolerance);
-  reader.read("fall_off_depth", &world.fall_off_depth);
-  reader.read("max_linear_speed", &world.max_linear_speed);
-  reader.read("max_angular_speed", &world.max_angular_speed);
-  reader.section("table", &readTableOptions, &world.table);
-  reader.section("stability", &readStabilityOptions, &world.stability);
-  if (!reader.ok()) return reader.finish();
-  if (Status valid = validate(world); !valid) return reader.named(valid);
-  *options = world;
-  return Status::success();
+  return readAndValidate(reader, false, options, [&reader](WorldOptions& world) {
+    reader.read("time_step", &world.time_step);
+    reader.read("solver_iterations", &world.solver_iterations);
+    reader.read("gravity", &world.gravity);
+    reader.section("sleeping", &readSleepingOptions, &world.sleeping);
+    reader.read("split_impulse_penetration_threshold", &world.split_impulse_penetration_threshold);
+    reader.read("erp", &world.erp);
+    reader.read("collision_margin", &world.collision_margin);
+    reader.read("overlap_tolerance", &world.overlap_tolerance);
+    reader.read("fall_off_depth", &world.fall_off_depth);
+    reader.read("max_linear_speed", &world.max_linear_speed);
+    reader.read("max_angular_speed", &world.max_angular_speed);
+    reader.section("table", &readTableOptions, &world.table);
+    reader.section("stability", &readStabilityOptions, &world.stability);
+  });
 }
 
 }  // namespace brick_stack_sim

@@ -117,4 +117,23 @@ class OptionsReader {
   Status error_;
 };
 
+/// The body every module's reader shares: reads its keys into a copy of
+/// `*options` with `read_keys(copy)`; when the module `owns_level` (a section
+/// of its own), refuses a key it does not know; validates the copy with the
+/// module's validate(), naming the failing key by its path. `*options`
+/// changes only on success. A module whose keys share a level with others
+/// (the world's at the top) leaves the unknown keys to the caller.
+template <typename Options, typename ReadKeys>
+Status readAndValidate(OptionsReader& reader, bool owns_level, Options* options,
+                       ReadKeys&& read_keys) {
+  Options copy = *options;
+  read_keys(copy);
+  if (owns_level || !reader.ok()) {
+    if (Status read = reader.finish(); !read) return read;
+  }
+  if (Status valid = validate(copy); !valid) return reader.named(valid);
+  *options = std::move(copy);
+  return Status::success();
+}
+
 }  // namespace brick_stack_sim
