@@ -6,14 +6,27 @@
 
 namespace brick_stack_sim {
 
-Status checkTiming(const char* generator, double start, double interval) {
+Status checkStartAndType(const char* generator, double start, double interval,
+                         const std::string& requested, const BrickTypeLibrary& types,
+                         const BrickType** type) {
   if (!std::isfinite(start) || start < 0.0 || !std::isfinite(interval) || interval < 0.0)
     return Status::error(std::string(generator) + " start and interval must be finite and >= 0 s");
+  *type = types.find(requested.empty() ? types.defaultType() : requested);
+  if (!*type)
+    return Status::error(std::string(generator) + " type '" + requested +
+                         "' is not a known brick type");
   return Status::success();
 }
 
-const BrickType* generatorType(const std::string& requested, const BrickTypeLibrary& types) {
-  return types.find(requested.empty() ? types.defaultType() : requested);
+ScheduledBrick& appendBrick(const BrickType& type, const Eigen::Vector3d& position, double at,
+                            std::vector<ScheduledBrick>* bricks) {
+  ScheduledBrick brick;
+  brick.placement.id = "b" + std::to_string(bricks->size());
+  brick.placement.type = type.name;
+  brick.placement.pose.translation() = position;
+  brick.at = at;
+  bricks->push_back(std::move(brick));
+  return bricks->back();
 }
 
 Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy) {

@@ -39,11 +39,17 @@ void readPyramidGenerator(const YAML::Node& node, const std::string& where,
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 
-/// Start and interval of a generator's placements must be finite and >= 0 s.
-Status checkTiming(const char* generator, double start, double interval);
+/// What every generator checks before it places anything: its start and
+/// interval (finite, >= 0 s) and the type it places (the requested one, or
+/// the library's default), returned in `*type`. Messages name the generator.
+Status checkStartAndType(const char* generator, double start, double interval,
+                         const std::string& requested, const BrickTypeLibrary& types,
+                         const BrickType** type);
 
-/// The type a generator places: the requested one, or the library's default.
-const BrickType* generatorType(const std::string& requested, const BrickTypeLibrary& types);
+/// Appends a brick of `type` at rest at `position` [m], placed at `at` [s],
+/// named b<n> after its place in `bricks`; returns it for a rotation.
+ScheduledBrick& appendBrick(const BrickType& type, const Eigen::Vector3d& position, double at,
+                            std::vector<ScheduledBrick>* bricks);
 
 /// ROS convention (REP 103): fixed-axis roll about x, then pitch about y, then yaw about z.
 Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy);

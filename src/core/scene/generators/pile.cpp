@@ -25,9 +25,10 @@ Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
     return Status::error(
         "pile cell, layer_height and base_height must be > 0 m, max_tilt in "
         "[0, 1.5] rad");
-  if (Status timing = checkTiming("pile", params.start, 0.0); !timing) return timing;
-  const BrickType* type = generatorType(params.type, types);
-  if (!type) return Status::error("pile type '" + params.type + "' is not a known brick type");
+  const BrickType* type = nullptr;
+  if (Status checked = checkStartAndType("pile", params.start, 0.0, params.type, types, &type);
+      !checked)
+    return checked;
   // Raw mt19937 output scaled by hand: std's distributions differ between
   // standard libraries, and a scene must be the same scene everywhere.
   std::mt19937 random(params.seed);
@@ -38,25 +39,23 @@ Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
   // Offsets stay within what keeps two neighbours apart whatever their yaw.
   const double footprint_radius = 0.5 * std::hypot(type->size.x(), type->size.y());
   const double slack = 0.5 * params.cell - footprint_radius;
-  int index = static_cast<int>(bricks->size());
   for (int i = 0; i < params.bricks; ++i) {
     const int layer = i / per_layer, column = i % params.columns,
               row = (i % per_layer) / params.columns;
-    ScheduledBrick brick;
-    brick.placement.id = "b" + std::to_string(index++);
-    brick.placement.type = type->name;
     const double jitter = std::max(slack, 0.0);
-    brick.placement.pose.translation() =
+    // One expression, as it always was: the order of the draws inside it
+    // fixes the scene.
+    ScheduledBrick& brick = appendBrick(
+        *type,
         Eigen::Vector3d(params.origin.x() + (column - 0.5 * (params.columns - 1)) * params.cell +
                             uniform(-jitter, jitter),
                         params.origin.y() + (row - 0.5 * (params.rows - 1)) * params.cell +
                             uniform(-jitter, jitter),
-                        params.base_height + layer * params.layer_height);
+                        params.base_height + layer * params.layer_height),
+        params.start, bricks);
     const double yaw = uniform(-M_PI, M_PI), pitch = uniform(-params.max_tilt, params.max_tilt),
                  roll = uniform(-params.max_tilt, params.max_tilt);
     brick.placement.pose.linear() = rotationFromRpy(Eigen::Vector3d(roll, pitch, yaw));
-    brick.at = params.start;
-    bricks->push_back(brick);
   }
   return Status::success();
 }

@@ -6,7 +6,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::readVector;
 using scene_yaml::requireKnownKeys;
 
 Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
@@ -15,22 +14,20 @@ Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& type
     return Status::error("pyramid base = " + std::to_string(params.base) + ": must be in [1, 200]");
   if (!std::isfinite(params.gap) || params.gap < 0.0 || params.gap > 0.1)
     return Status::error("pyramid gap must be in [0, 0.1] m");
-  if (Status timing = checkTiming("pyramid", params.start, params.interval); !timing) return timing;
-  const BrickType* type = generatorType(params.type, types);
-  if (!type) return Status::error("pyramid type '" + params.type + "' is not a known brick type");
+  const BrickType* type = nullptr;
+  if (Status checked =
+          checkStartAndType("pyramid", params.start, params.interval, params.type, types, &type);
+      !checked)
+    return checked;
   const double pitch = type->size.x() + params.gap;
-  int index = static_cast<int>(bricks->size());
   int placed = 0;
   for (int row = 0; row < params.base; ++row) {
     const int count = params.base - row;
     for (int i = 0; i < count; ++i) {
-      ScheduledBrick brick;
-      brick.placement.id = "b" + std::to_string(index++);
-      brick.placement.type = type->name;
-      brick.placement.pose.translation() =
-          Eigen::Vector3d((i - 0.5 * (count - 1)) * pitch, 0.0, (row + 0.5) * type->size.z());
-      brick.at = params.start + params.interval * placed++;
-      bricks->push_back(brick);
+      appendBrick(
+          *type,
+          Eigen::Vector3d((i - 0.5 * (count - 1)) * pitch, 0.0, (row + 0.5) * type->size.z()),
+          params.start + params.interval * placed++, bricks);
     }
   }
   return Status::success();

@@ -6,7 +6,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::readVector;
 using scene_yaml::requireKnownKeys;
 
 Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
@@ -16,21 +15,14 @@ Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary
                          ": must be in [1, 10000]");
   if (!std::isfinite(params.offset) || std::abs(params.offset) > 1.0)
     return Status::error("slant_tower offset must be finite and at most 1 m");
-  if (Status timing = checkTiming("slant_tower", params.start, params.interval); !timing)
-    return timing;
-  const BrickType* type = generatorType(params.type, types);
-  if (!type)
-    return Status::error("slant_tower type '" + params.type + "' is not a known brick type");
-  int index = static_cast<int>(bricks->size());
-  for (int layer = 0; layer < params.layers; ++layer) {
-    ScheduledBrick brick;
-    brick.placement.id = "b" + std::to_string(index++);
-    brick.placement.type = type->name;
-    brick.placement.pose.translation() =
-        Eigen::Vector3d(layer * params.offset, 0.0, (layer + 0.5) * type->size.z());
-    brick.at = params.start + params.interval * layer;
-    bricks->push_back(brick);
-  }
+  const BrickType* type = nullptr;
+  if (Status checked = checkStartAndType("slant_tower", params.start, params.interval, params.type,
+                                         types, &type);
+      !checked)
+    return checked;
+  for (int layer = 0; layer < params.layers; ++layer)
+    appendBrick(*type, Eigen::Vector3d(layer * params.offset, 0.0, (layer + 0.5) * type->size.z()),
+                params.start + params.interval * layer, bricks);
   return Status::success();
 }
 

@@ -17,12 +17,13 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   if (params.bricks_per_layer != 2 && params.bricks_per_layer != 3)
     return Status::error("tower bricks_per_layer = " + std::to_string(params.bricks_per_layer) +
                          ": must be 2 or 3");
-  if (Status timing = checkTiming("tower", params.start, params.interval); !timing) return timing;
   if (!std::isfinite(params.gap) || params.gap < 0.0)
     return Status::error("tower gap must be finite and >= 0 m");
-  const BrickType* type = generatorType(params.type, types);
-  if (!type) return Status::error("tower type '" + params.type + "' is not a known brick type");
-  const std::string& type_name = type->name;
+  const BrickType* type = nullptr;
+  if (Status checked =
+          checkStartAndType("tower", params.start, params.interval, params.type, types, &type);
+      !checked)
+    return checked;
 
   const double length = type->size.x(), width = type->size.y(), height = type->size.z();
   // Bricks of a layer lie under the ends of the crosswise layer above.
@@ -41,7 +42,6 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   if (!params.origin.allFinite() || !std::isfinite(params.spacing) || params.spacing < 0.0)
     return Status::error("tower origin and spacing must be finite, spacing >= 0 m");
 
-  int index = static_cast<int>(bricks->size());
   int placed = 0;
   for (int gx = 0; gx < params.grid_x; ++gx) {
     for (int gy = 0; gy < params.grid_y; ++gy) {
@@ -50,17 +50,14 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
         const bool along_y = layer % 2 == 1;
         const double z = 0.5 * height + layer * (height + params.gap);
         for (double lane : lanes) {
-          ScheduledBrick brick;
-          brick.placement.id = "b" + std::to_string(index++);
-          brick.placement.type = type_name;
-          brick.placement.pose.translation() =
-              along_y ? Eigen::Vector3d(centre.x() + lane, centre.y(), z)
-                      : Eigen::Vector3d(centre.x(), centre.y() + lane, z);
+          ScheduledBrick& brick =
+              appendBrick(*type,
+                          along_y ? Eigen::Vector3d(centre.x() + lane, centre.y(), z)
+                                  : Eigen::Vector3d(centre.x(), centre.y() + lane, z),
+                          params.start + params.interval * placed++, bricks);
           if (along_y)
             brick.placement.pose.linear() =
                 Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-          brick.at = params.start + params.interval * placed++;
-          bricks->push_back(brick);
         }
       }
     }
