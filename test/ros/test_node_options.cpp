@@ -11,20 +11,13 @@
 #include "brick_stack_sim/core/stability/stability_modes.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "brick_stack_sim/ros/xmlrpc_parameters.h"
+#include "support/xmlrpc_list.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
 namespace {
 
 using XmlRpc::XmlRpcValue;
-
-XmlRpcValue list(std::initializer_list<XmlRpcValue> items) {
-  XmlRpcValue value;
-  value.setSize(static_cast<int>(items.size()));
-  int i = 0;
-  for (const XmlRpcValue& item : items) value[i++] = item;
-  return value;
-}
 
 /// The private namespace as the parameter server returns it: "table/size"
 /// is member "size" of the struct "table".
@@ -112,7 +105,7 @@ TEST(NodeOptions, ReadsEveryParameter) {
   params.set("sleeping/linear_threshold", 0.01);
   params.set("sleeping/angular_threshold", 0.1);
   params.set("sleeping/time", 1.5);
-  params.set("table/size", list({XmlRpcValue(2.0), XmlRpcValue(1)}));
+  params.set("table/size", test::xmlRpcList({XmlRpcValue(2.0), XmlRpcValue(1)}));
   params.set("table/thickness", 0.05);
   params.set("table/height", 0.7);
   params.set("table/friction", 0.6);
@@ -121,7 +114,8 @@ TEST(NodeOptions, ReadsEveryParameter) {
   params.set("fall_off_depth", 0.05);
   params.set("types_urdf", std::string("/x/bricks.urdf"));
   params.set("materials_yaml", std::string("/x/bricks.yaml"));
-  params.set("scene_dirs", list({XmlRpcValue(std::string("/a")), XmlRpcValue(std::string("/b"))}));
+  params.set("scene_dirs",
+             test::xmlRpcList({XmlRpcValue(std::string("/a")), XmlRpcValue(std::string("/b"))}));
   params.set("scene", std::string("tower10"));
   NodeOptions options;
   const Status status = params.load(&options);
@@ -269,8 +263,13 @@ TEST(NodeOptions, RefusesUnknownParametersByTheirName) {
   // A typo must stop the node, not silently become a default.
   const std::string top = expectRefused("time_stepp", 0.002);
   EXPECT_NE(top.find("not a known parameter"), std::string::npos) << top;
-  EXPECT_NE(top.find("time_step"), std::string::npos) << top;  // what is known is listed
-  expectRefused("stability/rest_tme", 0.1);
+  EXPECT_NE(top.find("did you mean time_step?"), std::string::npos) << top;
+  const std::string nested = expectRefused("stability/rest_tme", 0.1);
+  EXPECT_NE(nested.find("did you mean stability/rest_time?"), std::string::npos) << nested;
+  // Nothing close: no guess, the known keys only.
+  const std::string far = expectRefused("colour_of_the_bricks", std::string("red"));
+  EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+  EXPECT_NE(far.find("known here: "), std::string::npos) << far;
   expectRefused("table/colour", std::string("oak"));
   expectRefused("sleeping/enable", true);
   // A section given as a plain value is named as well.
@@ -287,18 +286,20 @@ TEST(NodeOptions, RefusesWrongTypes) {
   expectRefused("frame_id", 3);
   expectRefused("stability/mode", true);
   expectRefused("table/size", 1.2);
-  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(std::string("wide"))}));
+  expectRefused("table/size",
+                test::xmlRpcList({XmlRpcValue(1.2), XmlRpcValue(std::string("wide"))}));
   expectRefused("scene_dirs", std::string("/one/dir"));
-  expectRefused("scene_dirs", list({XmlRpcValue(4)}));
+  expectRefused("scene_dirs", test::xmlRpcList({XmlRpcValue(4)}));
   expectRefused("scene", 7);
   expectRefused("types_urdf", false);
 }
 
 TEST(NodeOptions, RefusesTableSizeOfWrongLength) {
-  expectRefused("table/size", list({XmlRpcValue(1.2)}));
-  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(0.8), XmlRpcValue(0.1)}));
-  expectRefused("table/size", list({XmlRpcValue(1.2), XmlRpcValue(-0.8)}));
-  expectRefused("table/size", list({}));
+  expectRefused("table/size", test::xmlRpcList({XmlRpcValue(1.2)}));
+  expectRefused("table/size",
+                test::xmlRpcList({XmlRpcValue(1.2), XmlRpcValue(0.8), XmlRpcValue(0.1)}));
+  expectRefused("table/size", test::xmlRpcList({XmlRpcValue(1.2), XmlRpcValue(-0.8)}));
+  expectRefused("table/size", test::xmlRpcList({}));
 }
 
 TEST(NodeOptions, ResolvesDataPathsFromThePackage) {

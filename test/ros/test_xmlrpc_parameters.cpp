@@ -6,6 +6,7 @@
 
 #include "brick_stack_sim/core/options/options_reader.h"
 #include "brick_stack_sim/ros/xmlrpc_parameters.h"
+#include "support/xmlrpc_list.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -13,14 +14,6 @@ namespace {
 
 using PV = ParameterValue;
 using XmlRpc::XmlRpcValue;
-
-XmlRpcValue list(std::initializer_list<XmlRpcValue> items) {
-  XmlRpcValue value;
-  value.setSize(static_cast<int>(items.size()));
-  int i = 0;
-  for (const XmlRpcValue& item : items) value[i++] = item;
-  return value;
-}
 
 PV convert(const XmlRpcValue& value, const std::string& name = "~") {
   PV tree = PV::makeString("marker");
@@ -50,7 +43,7 @@ TEST(FromXmlRpc, Scalars) {
 
 TEST(FromXmlRpc, ArraysKeepOrderAndItemTypes) {
   EXPECT_EQ(
-      convert(list({1, 2.5, "x", true})),
+      convert(test::xmlRpcList({1, 2.5, "x", true})),
       PV::makeList({PV::makeInt(1), PV::makeDouble(2.5), PV::makeString("x"), PV::makeBool(true)}));
   XmlRpcValue empty;
   empty.setSize(0);
@@ -60,13 +53,13 @@ TEST(FromXmlRpc, ArraysKeepOrderAndItemTypes) {
 TEST(FromXmlRpc, NestedStructsAndArrays) {
   XmlRpcValue params;
   params["time_step"] = 0.001;
-  params["table"]["size"] = list({1.2, 0.8});
+  params["table"]["size"] = test::xmlRpcList({1.2, 0.8});
   params["table"]["thickness"] = 0.03;
-  params["scene_dirs"] = list({"a", "b"});
-  params["bricks"] = list({XmlRpcValue(), XmlRpcValue()});
+  params["scene_dirs"] = test::xmlRpcList({"a", "b"});
+  params["bricks"] = test::xmlRpcList({XmlRpcValue(), XmlRpcValue()});
   params["bricks"][0]["id"] = "first";
   params["bricks"][1]["id"] = "second";
-  params["bricks"][1]["position"] = list({0, 0, 0.1});
+  params["bricks"][1]["position"] = test::xmlRpcList({0, 0, 0.1});
 
   PV expected;
   expected.set("time_step", PV::makeDouble(0.001));
@@ -98,7 +91,8 @@ TEST(FromXmlRpc, NestedStructsAndArrays) {
   reader.skip("scene_dirs");
   reader.skip("bricks");
   EXPECT_EQ(reader.finish().message,
-            "table/thicknes is not a known parameter (known here: size, thickness)");
+            "table/thicknes is not a known parameter (did you mean table/thickness? known here: "
+            "size, thickness)");
 }
 
 TEST(FromXmlRpc, EmptyStructIsAnEmptyMap) {
@@ -125,7 +119,7 @@ TEST(FromXmlRpc, UnsupportedTypeDeepInsideIsNamedWithItsPath) {
   std::tm time{};
   XmlRpcValue params;
   params["a"] = 1;
-  params["table"]["stamps"] = list({1, XmlRpcValue(&time)});
+  params["table"]["stamps"] = test::xmlRpcList({1, XmlRpcValue(&time)});
   EXPECT_EQ(refused(params, "~"), "parameter ~table/stamps[1] has an unsupported type (date-time)");
   XmlRpcValue below;
   below["x"]["y"] = XmlRpcValue();

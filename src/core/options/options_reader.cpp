@@ -1,11 +1,33 @@
 #include "brick_stack_sim/core/options/options_reader.h"
 
+#include <algorithm>
+
 #include <limits>
 #include <utility>
 
 namespace brick_stack_sim {
 
 namespace {
+
+/// Keys this many edits from a known one get it suggested.
+constexpr std::size_t kMaxSuggestionDistance = 2;
+
+/// Levenshtein distance; long keys are not worth the quadratic cost.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  if (a.size() > 64 || b.size() > 64) return kMaxSuggestionDistance + 1;
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
 
 /// How many known keys an unknown-key message lists before "...".
 constexpr std::size_t kMaxListedKeys = 20;
@@ -155,6 +177,17 @@ Status OptionsReader::finish() const {
   if (!error_.ok) return error_;
   for (const auto& member : values_->map()) {
     if (known_.count(member.first) != 0) continue;
+    // A typo is most often a letter or two off a known key: name that one first.
+    std::string closest;
+    std::size_t closest_distance = kMaxSuggestionDistance + 1;
+    for (const std::string& name : known_) {
+      const std::size_t distance = editDistance(member.first, name);
+      if (distance < closest_distance) {
+        closest = name;
+        closest_distance = distance;
+      }
+    }
+    const std::string suggestion = closest.empty() ? "" : "did you mean " + path_ + closest + "? ";
     std::string known;
     std::size_t listed = 0;
     for (const std::string& name : known_) {
@@ -166,8 +199,8 @@ Status OptionsReader::finish() const {
       known += name;
     }
     if (known.empty()) known = "none";
-    return Status::error(path_ + shortenForMessage(member.first) +
-                         " is not a known parameter (known here: " + known + ")");
+    return Status::error(path_ + shortenForMessage(member.first) + " is not a known parameter (" +
+                         suggestion + "known here: " + known + ")");
   }
   return Status::success();
 }

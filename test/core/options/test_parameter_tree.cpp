@@ -398,8 +398,8 @@ TEST(OptionsReader, UnknownKeyAtTheRootIsNamedWithTheKnownKeys) {
   reader.read("fall_off_depth", &fall_off_depth);
   EXPECT_TRUE(reader.ok());  // unknown keys are found by finish() only
   EXPECT_EQ(reader.finish().message,
-            "time_stepp is not a known parameter (known here: fall_off_depth, gravity, "
-            "time_step)");
+            "time_stepp is not a known parameter (did you mean time_step? known here: "
+            "fall_off_depth, gravity, time_step)");
 }
 
 TEST(OptionsReader, FirstUnknownKeyInKeyOrderAndNoneKnown) {
@@ -542,12 +542,14 @@ TEST(OptionsReader, ErrorsInsideASectionCarryItsPath) {
   EXPECT_EQ(readWorld(yaml("table: {size: [1, wide]}\n"), &world).message,
             "table/size[1] is string 'wide', expected a number");
   EXPECT_EQ(readWorld(yaml("table: {sizee: [1, 2]}\n"), &world).message,
-            "table/sizee is not a known parameter (known here: size, thickness)");
+            "table/sizee is not a known parameter (did you mean table/size? known here: size, "
+            "thickness)");
   EXPECT_EQ(readWorld(yaml("table: {thickness: 0}\n"), &world).message,
             "table/thickness = 0: must be > 0 m");
   // A section that forgets finish() still refuses an unknown key.
   EXPECT_EQ(readWorld(yaml("sleeping: {enabled: false, treshold: 1}\n"), &world).message,
-            "sleeping/treshold is not a known parameter (known here: enabled, threshold)");
+            "sleeping/treshold is not a known parameter (did you mean sleeping/threshold? known "
+            "here: enabled, threshold)");
   // An error leaves the section's options alone.
   EXPECT_EQ(world.table.size, Eigen::Vector2d(1.2, 0.8));
   EXPECT_EQ(world.table.thickness, 0.03);
@@ -556,7 +558,8 @@ TEST(OptionsReader, ErrorsInsideASectionCarryItsPath) {
 TEST(OptionsReader, UnknownKeyAtTheRootAfterSections) {
   WorldOptions world;
   EXPECT_EQ(readWorld(yaml("time_stepp: 0.01\ntable: {thickness: 0.02}\n"), &world).message,
-            "time_stepp is not a known parameter (known here: sleeping, table, time_step)");
+            "time_stepp is not a known parameter (did you mean time_step? known here: sleeping, "
+            "table, time_step)");
 }
 
 TEST(OptionsReader, NestedSectionPathsAndCallables) {
@@ -592,7 +595,8 @@ TEST(OptionsReader, NestedSectionPathsAndCallables) {
     });
     return Status::success();
   });
-  EXPECT_EQ(second.finish().message, "a/b/c/z is not a known parameter (known here: x)");
+  EXPECT_EQ(second.finish().message,
+            "a/b/c/z is not a known parameter (did you mean a/b/c/x? known here: x)");
 }
 
 TEST(OptionsReader, UserNamedKeysThroughValues) {

@@ -111,6 +111,20 @@ class ModelConformance : public ::testing::TestWithParam<std::string> {
     ASSERT_EQ(request(input).freeze.size(), 1u);
   }
 
+  /// b0 on the table and each next brick flush on the one below, placed at
+  /// rest: each joins the stack at once.
+  void placeStack(int bricks) {
+    for (int i = 0; i < bricks; ++i) {
+      const BodyHandle b = static_cast<BodyHandle>(i);
+      StabilityInput input;
+      input.placed.push_back(
+          {kapla(b, 0, 0, b * kKaplaThickness),
+           {resting(b, b == 0 ? kTableHandle : b - 1, -kKaplaLength / 2, kKaplaLength / 2,
+                    -kKaplaWidth / 2, kKaplaWidth / 2, b * kKaplaThickness)}});
+      ASSERT_EQ(request(input).freeze.size(), 1u) << "b" << b << " placed at rest";
+    }
+  }
+
   static void append(const StabilityDecisions& more, StabilityDecisions* all) {
     all->freeze.insert(all->freeze.end(), more.freeze.begin(), more.freeze.end());
     all->wake.insert(all->wake.end(), more.wake.begin(), more.wake.end());
@@ -170,14 +184,7 @@ TEST_P(ModelConformance, AStackAtRestFreezesFromTheBottomUpInOneStep) {
 }
 
 TEST_P(ModelConformance, RemovalAndPushesWakeWhatTheBrickCarried) {
-  for (BodyHandle b : {0u, 1u, 2u}) {
-    StabilityInput input;
-    input.placed.push_back(
-        {kapla(b, 0, 0, b * kKaplaThickness),
-         {resting(b, b == 0 ? kTableHandle : b - 1, -kKaplaLength / 2, kKaplaLength / 2,
-                  -kKaplaWidth / 2, kKaplaWidth / 2, b * kKaplaThickness)}});
-    ASSERT_EQ(request(input).freeze.size(), 1u) << "b" << b << " placed at rest";
-  }
+  placeStack(3);
   StabilityInput push;
   push.pushed = {1};
   const StabilityDecisions pushed = request(push);
@@ -198,14 +205,7 @@ TEST_P(ModelConformance, RemovalAndPushesWakeWhatTheBrickCarried) {
 }
 
 TEST_P(ModelConformance, RemovingASupporterNamesItInTheWakeReason) {
-  for (BodyHandle b : {0u, 1u}) {
-    StabilityInput input;
-    input.placed.push_back(
-        {kapla(b, 0, 0, b * kKaplaThickness),
-         {resting(b, b == 0 ? kTableHandle : 0, -kKaplaLength / 2, kKaplaLength / 2,
-                  -kKaplaWidth / 2, kKaplaWidth / 2, b * kKaplaThickness)}});
-    request(input);
-  }
+  placeStack(2);
   StabilityInput removal;
   removal.removed = {0};
   const StabilityDecisions decisions = request(removal);
