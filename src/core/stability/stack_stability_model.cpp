@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "stability/contact_classifier.h"
+#include "util/text_format.h"
 
 namespace brick_stack_sim {
 
@@ -141,10 +142,9 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
   result.margin = stability.margin;
   for (const SupportPatch& patch : stability.supports) result.supporters.push_back(patch.supporter);
   if (!admitted) {
-    result.reason =
-        stability.supports.empty()
-            ? "it would rest on nothing that is frozen or the ground"
-            : "it would not rest stably: margin " + std::to_string(stability.margin) + " m";
+    result.reason = stability.supports.empty()
+                        ? "it would rest on nothing that is frozen or the ground"
+                        : "it would not rest stably: margin " + millimetres(stability.margin);
     return result;
   }
   // Its load on the stack below, judged on a copy of the components it joins.

@@ -1,6 +1,7 @@
 #include "world/brick_sets.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "bullet/bullet_scene.h"
 #include "bullet/dormant_colliders.h"
@@ -72,32 +73,39 @@ void BrickSets::leave(BrickRecord* brick) { leaveSet(brick); }
 Status BrickSets::checkInvariants(const std::vector<const BrickRecord*>& bricks) const {
   if (!std::is_sorted(movers_.begin(), movers_.end(), bySerial))
     return Status::error("the movers are not in placement order");
+  // Counted once, so that the check after every step of a debug build stays
+  // linear in the number of bricks.
+  std::unordered_map<const BrickRecord*, int> in_movers, in_held;
+  for (const BrickRecord* brick : movers_) ++in_movers[brick];
+  for (const BrickRecord* brick : held_) ++in_held[brick];
+  std::unordered_map<BodyHandle, int> frozen_in_world;
+  for (BodyHandle handle : dormant_->inWorld()) ++frozen_in_world[handle];
+  auto count = [](const auto& counts, const auto& key) {
+    auto found = counts.find(key);
+    return found == counts.end() ? 0 : found->second;
+  };
   std::size_t dynamic = 0, frozen = 0, held = 0;
   for (const BrickRecord* brick : bricks) {
     const BodyHandle h = brick->handle;
-    const auto in = [brick](const std::vector<BrickRecord*>& set) {
-      return std::count(set.begin(), set.end(), brick);
-    };
+    const int movers = count(in_movers, brick), holding = count(in_held, brick);
     const bool in_dormant = dormant_->contains(h);
-    const auto in_world_list =
-        std::count(dormant_->inWorld().begin(), dormant_->inWorld().end(), h);
     bool consistent = false;
     switch (brick->mode) {
       case BrickMode::kDynamic:
         ++dynamic;
-        consistent = in(movers_) == 1 && in(held_) == 0 && !in_dormant && scene_->inWorld(h) &&
+        consistent = movers == 1 && holding == 0 && !in_dormant && scene_->inWorld(h) &&
                      scene_->dynamics(h) == BodyDynamics::kDynamic;
         break;
       case BrickMode::kFrozenStable:
       case BrickMode::kFrozenLeaning:
         ++frozen;
-        consistent = in(movers_) == 0 && in(held_) == 0 && in_dormant &&
+        consistent = movers == 0 && holding == 0 && in_dormant &&
                      scene_->dynamics(h) == BodyDynamics::kStatic &&
-                     scene_->inWorld(h) == (in_world_list == 1);
+                     scene_->inWorld(h) == (count(frozen_in_world, h) == 1);
         break;
       case BrickMode::kHeld:
         ++held;
-        consistent = in(movers_) == 0 && in(held_) == 1 && !in_dormant && scene_->inWorld(h) &&
+        consistent = movers == 0 && holding == 1 && !in_dormant && scene_->inWorld(h) &&
                      scene_->dynamics(h) == BodyDynamics::kKinematic;
         break;
     }

@@ -39,6 +39,8 @@ struct PlacementReport {
   std::string reason;
 };
 
+struct WorldState;
+
 /// Bricks on a table, simulated by Bullet in double precision with a fixed
 /// time step, with a stability model on top (WorldOptions::stability.mode)
 /// that freezes bricks resting stably and wakes them when their load leaves
@@ -97,8 +99,8 @@ class BrickWorld {
   Status checkInvariants() const;
 
  private:
-  explicit BrickWorld(std::unique_ptr<struct WorldState> state);
-  std::unique_ptr<struct WorldState> state_;
+  explicit BrickWorld(std::unique_ptr<WorldState> state);
+  std::unique_ptr<WorldState> state_;
 };
 
 }  // namespace brick_stack_sim
