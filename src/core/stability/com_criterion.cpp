@@ -1,8 +1,5 @@
 #include "stability/com_criterion.h"
 
-#include <map>
-
-#include "brick_stack_sim/core/geometry/load_distribution.h"
 #include "stability/support_evaluation.h"
 #include "stability/support_graph.h"
 #include "util/text_format.h"
@@ -36,7 +33,9 @@ WakeDecision ComCriterion::outsideSupport(BodyHandle brick, double margin) const
 
 std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
                                               const std::vector<BodyHandle>& load_order) const {
-  std::map<BodyHandle, std::vector<LoadShare>> received;
+  // Each brick's loads arrive from the bricks it carries, all before its own
+  // turn in the load order, and are summed in the order they arrive.
+  for (BodyHandle handle : load_order) graph->find(handle)->received.clear();
   std::vector<WakeDecision> unstable;
   std::vector<LoadShare> shares;
   for (BodyHandle handle : load_order) {
@@ -45,7 +44,7 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
     // each where it acts. Heights only place the marker ray: mass-weighted.
     double mass = node.mass;
     Eigen::Vector3d moment = node.mass * node.com;
-    for (const LoadShare& load : received[handle]) {
+    for (const LoadShare& load : node.received) {
       mass += load.mass;
       moment.head<2>() += load.mass * load.point;
     }
@@ -69,8 +68,9 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
     }
     for (std::size_t i = 0; i < node.supports.size(); ++i) {
       const BodyHandle supporter = node.supports[i].supporter;
-      if (!graph->contains(supporter)) continue;  // the table carries anything
-      received[supporter].push_back(shares[i]);
+      SupportGraph::Node* below = graph->find(supporter);
+      if (!below) continue;  // the table carries anything
+      below->received.push_back(shares[i]);
     }
   }
   return unstable;

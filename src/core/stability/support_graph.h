@@ -4,6 +4,7 @@
 #include <set>
 #include <vector>
 
+#include "brick_stack_sim/core/geometry/load_distribution.h"
 #include "stability/stability_model.h"
 
 namespace brick_stack_sim {
@@ -22,6 +23,10 @@ class SupportGraph {
     double mass = 0.0;                              ///< [kg]
     std::vector<SupportPatch> supports;  ///< One patch per supporter, in supporter order.
     std::set<BodyHandle> carries;        ///< Frozen bricks resting on it.
+    /// The loads the bricks it carries pass down, where they act, as a
+    /// load-passing criterion found them in its last check (kept here, not
+    /// rebuilt, so a check allocates nothing for bricks it saw before).
+    std::vector<LoadShare> received;
     BrickStability stability;
   };
 
