@@ -35,13 +35,15 @@ std::string formatTime(double t) {
 
 Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOptions& options,
                        const BrickTypeLibrary& types, std::unique_ptr<SimNode>* node) {
+  // Options built in code (tests, other programs) are checked like parameters.
+  if (Status valid = validate(options.config.world); !valid) return prefixed("parameter ~", valid);
   if (Status valid = validate(options.config.publish); !valid)
     return prefixed("parameter ~", valid);
   if (types.empty()) return Status::error("no brick types: check ~types_urdf");
   std::unique_ptr<SimNode> result(new SimNode(private_node_handle, options));
   if (Status created = Simulation::create(options.config.world, types, &result->simulation_);
       !created)
-    return prefixed("parameter ~", created);
+    return created;
 
   SimNode& self = *result;
   ros::NodeHandle& nh = self.node_handle_;
