@@ -19,6 +19,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 DEFAULT = (0.001, 20)
 COLOURS = {"none_nosleep": "tab:red", "none_sleep": "tab:orange", "com": "tab:green"}
+# Modes the benchmark takes from the core's registry but this script does not
+# know yet still get a colour of their own, in the order they first appear.
+SPARE_COLOURS = ["tab:blue", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
+
+
+def colours_for(rows):
+    """Every mode of `rows` with its colour: the known ones first, then the rest."""
+    modes = list(COLOURS)
+    for r in rows:
+        if r["mode"] not in modes:
+            modes.append(r["mode"])
+    spare = iter(SPARE_COLOURS)
+    return {m: COLOURS.get(m) or next(spare, "tab:gray") for m in modes}
 ERROR_OF = {  # case kind -> (column, axis label)
     "drift_mm": "drift over the run [mm]",
     "threshold_error_pct": "harmonic threshold error [% of f]",
@@ -55,7 +68,7 @@ def is_default(row):
 def plot_pareto(case, rows, out_dir, stem):
     column = error_column(rows)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for mode, colour in COLOURS.items():
+    for mode, colour in colours_for(rows).items():
         points = [r for r in rows if r["mode"] == mode]
         if not points:
             continue
@@ -84,7 +97,7 @@ def plot_scaling(rows, out_dir, stem):
     if not towers:
         return
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for mode, colour in COLOURS.items():
+    for mode, colour in colours_for(rows).items():
         points = sorted((r["bricks"], max(r["wall_ms_per_sim_s"], 1e-3))
                         for r in towers if r["mode"] == mode)
         if points:
