@@ -111,6 +111,12 @@ TEST(Scene, TowerLayersCrossAndRestOnEachOther) {
   }
   // The ends of a crosswise brick lie exactly over the two bricks below it.
   EXPECT_NEAR(offset + kKaplaWidth / 2, kKaplaLength / 2, 1e-15);
+  // The ROS tests place the tower laid by hand in test/support/kapla.h
+  // through ~place_brick: it is the generator's, brick for brick.
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    const BrickPlacement by_hand = test::towerBrick(static_cast<int>(i));
+    EXPECT_TRUE(bricks[i].placement.pose.isApprox(by_hand.pose, 1e-12)) << i;
+  }
 }
 
 TEST(Scene, TowerRefusesBadParameters) {
