@@ -28,10 +28,11 @@ Status parseInt(const std::string& flag, const std::string& text, int* value) {
   return Status::success();
 }
 
-std::string modeList() {
+/// Each mode of the registry with what it does, one line each.
+std::string modeLines() {
   std::string text;
   for (const std::string& mode : availableStabilityModes())
-    text += (text.empty() ? "" : ", ") + mode;
+    text += "                        " + mode + ": " + describeStabilityMode(mode) + "\n";
   return text;
 }
 
@@ -44,9 +45,8 @@ std::string runUsage() {
          "                      repeatable, later files override earlier ones key by key\n"
          "  --scene FILE|NAME   scene yaml, or a name from the scene directories\n"
          "                      (default: the config's `scene`)\n"
-         "  --mode MODE         stability model: " +
-         modeList() +
-         " (default: com)\n"
+         "  --mode MODE         stability model (default: com), one of\n" +
+         modeLines() +
          "  --duration S        simulated time [s] (default: last placement + 5 s)\n"
          "  --time-step S       fixed step [s] (default 0.001)\n"
          "  --iterations N      solver iterations per step (default 20)\n"

@@ -277,10 +277,6 @@ void BulletScene::applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse
                     convertEigenToBt(point) - body.getCenterOfMassPosition());
 }
 
-void BulletScene::setKinematicTarget(BodyHandle handle, const Eigen::Isometry3d& pose) {
-  impl_->rigid(handle).setWorldTransform(convertEigenToBt(pose));
-}
-
 void BulletScene::step(double dt) {
   // maxSubSteps = 0: exactly one step of exactly dt, no interpolation.
   impl_->world->stepSimulation(dt, 0, dt);

@@ -54,7 +54,7 @@ class BulletScene {
   void makeDynamic(BodyHandle handle, const BrickType& type);
   /// At rest, without mass: a collider that never moves.
   void makeStatic(BodyHandle handle);
-  /// Without mass, moved by setKinematicTarget(), never put to sleep.
+  /// Without mass, moved from outside, never put to sleep.
   void makeKinematic(BodyHandle handle);
   BodyDynamics dynamics(BodyHandle handle) const;
 
@@ -82,8 +82,6 @@ class BulletScene {
   /// An impulse [N s] at a world point [m].
   void applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse,
                     const Eigen::Vector3d& point);
-  /// The pose a kinematic body reaches at the end of the next step.
-  void setKinematicTarget(BodyHandle handle, const Eigen::Isometry3d& pose);
 
   /// Exactly one step of `dt` [s]: no substeps, no interpolation.
   void step(double dt);

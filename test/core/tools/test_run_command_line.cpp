@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/stability/stability_modes.h"
 #include "brick_stack_sim/tools/run_command_line.h"
 #include "support/kapla.h"
 
@@ -133,6 +134,15 @@ TEST(RunCommandLine, ConfigTyposAndBadValuesAreNamedWithTheFile) {
       EXPECT_NE(s.message.find(word), std::string::npos) << s.message;
     EXPECT_EQ(cli.config.world.time_step, 0.005);
   }
+}
+
+TEST(RunCommandLine, HelpListsEveryModeOfTheRegistry) {
+  const std::string usage = runUsage();
+  for (const std::string& mode : availableStabilityModes()) {
+    EXPECT_FALSE(describeStabilityMode(mode).empty()) << mode;
+    EXPECT_NE(usage.find(mode + ": " + describeStabilityMode(mode)), std::string::npos) << usage;
+  }
+  EXPECT_TRUE(describeStabilityMode("magic").empty());
 }
 
 TEST(RunCommandLine, BadFlagsAreNamed) {
