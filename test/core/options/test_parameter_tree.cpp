@@ -221,6 +221,19 @@ struct Everything {
   Eigen::Vector3d triple{1.0, 2.0, 3.0};
 };
 
+/// Every field of `e` still holds its default.
+void expectDefaults(const Everything& e) {
+  const Everything defaults;
+  EXPECT_EQ(e.real, defaults.real);
+  EXPECT_EQ(e.integer, defaults.integer);
+  EXPECT_EQ(e.flag, defaults.flag);
+  EXPECT_EQ(e.text, defaults.text);
+  EXPECT_EQ(e.reals, defaults.reals);
+  EXPECT_EQ(e.texts, defaults.texts);
+  EXPECT_EQ(e.pair, defaults.pair);
+  EXPECT_EQ(e.triple, defaults.triple);
+}
+
 void readEverything(OptionsReader& reader, Everything* e) {
   reader.read("real", &e->real);
   reader.read("integer", &e->integer);
@@ -258,15 +271,7 @@ TEST(OptionsReader, AbsentKeysKeepTheDefaults) {
   Everything e;
   readEverything(reader, &e);
   EXPECT_TRUE(reader.finish().ok);
-  const Everything defaults;
-  EXPECT_EQ(e.real, defaults.real);
-  EXPECT_EQ(e.integer, defaults.integer);
-  EXPECT_EQ(e.flag, defaults.flag);
-  EXPECT_EQ(e.text, defaults.text);
-  EXPECT_EQ(e.reals, defaults.reals);
-  EXPECT_EQ(e.texts, defaults.texts);
-  EXPECT_EQ(e.pair, defaults.pair);
-  EXPECT_EQ(e.triple, defaults.triple);
+  expectDefaults(e);
 }
 
 TEST(OptionsReader, EmptyListsAreRead) {
@@ -289,15 +294,7 @@ void expectRefused(const std::string& text, const std::string& message) {
   readEverything(reader, &e);
   EXPECT_FALSE(reader.ok()) << text;
   EXPECT_EQ(reader.finish().message, message) << text;
-  const Everything defaults;
-  EXPECT_EQ(e.real, defaults.real);
-  EXPECT_EQ(e.integer, defaults.integer);
-  EXPECT_EQ(e.flag, defaults.flag);
-  EXPECT_EQ(e.text, defaults.text);
-  EXPECT_EQ(e.reals, defaults.reals);
-  EXPECT_EQ(e.texts, defaults.texts);
-  EXPECT_EQ(e.pair, defaults.pair);
-  EXPECT_EQ(e.triple, defaults.triple);
+  expectDefaults(e);
 }
 
 TEST(OptionsReader, WrongTypesAreNamedWithTheValueFound) {
