@@ -1,0 +1,244 @@
+#include "stability/rigid_block_statics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <coin/ClpSimplex.hpp>
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// The LP in Clp's column form. Rows: 6 per free body (force x, y, z, then
+/// torque about its COM x, y, z), in units of the heaviest free body's
+/// weight and (for torques) the problem's size, so Clp's absolute
+/// tolerances mean the same at any brick size.
+class EquilibriumLp {
+ public:
+  EquilibriumLp(const std::vector<StaticsBody>& bodies, const StaticsOptions& options)
+      : bodies_(bodies), row_of_(bodies.size(), -1) {
+    int rows = 0;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].fixed) continue;
+      row_of_[i] = rows;
+      rows += 6;
+      weight_unit_ = std::max(weight_unit_, bodies[i].mass * options.gravity);
+    }
+    row_count_ = rows;
+    load_direction_ = Eigen::Vector3d(0.0, 0.0, -1.0) + options.extra_acceleration / options.gravity;
+    gravity_ = options.gravity;
+    column_start_.push_back(0);
+  }
+
+  int rowCount() const { return row_count_; }
+  int columnCount() const { return static_cast<int>(column_start_.size()) - 1; }
+  double weightUnit() const { return weight_unit_; }
+  int rowOf(int body) const { return body < 0 ? -1 : row_of_[body]; }
+  bool free(int body) const { return rowOf(body) >= 0; }
+
+  /// The size that turns torques into forces: the largest lever of any contact.
+  void measureLevers(const std::vector<StaticsContact>& contacts) {
+    for (const StaticsContact& c : contacts) {
+      for (int body : {c.a, c.b})
+        if (free(body))
+          length_unit_ = std::max(length_unit_, (c.point - bodies_[body].com).norm());
+    }
+  }
+
+  /// A column for a force `direction` [unit force] applied at `point` on `a`
+  /// and its reaction on `b`.
+  void addForceColumn(const StaticsContact& c, const Eigen::Vector3d& direction, double cost) {
+    addForceOn(c.a, c.point, direction);
+    addForceOn(c.b, c.point, -direction);
+    closeColumn(0.0, COIN_DBL_MAX, cost);
+  }
+
+  /// A column for the extra load `acceleration` times every free body's
+  /// mass, scaled by the column's value [m/s^2].
+  void addLoadColumn(const Eigen::Vector3d& direction, double upper, double cost) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (!free(static_cast<int>(i))) continue;
+      const Eigen::Vector3d load = bodies_[i].mass * gravity_ / weight_unit_ * direction;
+      for (int k = 0; k < 3; ++k) add(row_of_[i] + k, load[k]);
+    }
+    closeColumn(0.0, upper, cost);
+  }
+
+  /// Two columns per row (surplus and deficit) that absorb any imbalance at
+  /// a unit cost each.
+  void addImbalanceColumns() {
+    for (int row = 0; row < row_count_; ++row) {
+      for (double sign : {1.0, -1.0}) {
+        add(row, sign);
+        closeColumn(0.0, COIN_DBL_MAX, 1.0);
+      }
+    }
+  }
+
+  /// Row bounds: what the contacts must supply for each free body, in units
+  /// of the weight unit: minus its load.
+  void rowBounds(std::vector<double>* bounds) const {
+    bounds->assign(row_count_, 0.0);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (!free(static_cast<int>(i))) continue;
+      const Eigen::Vector3d load = bodies_[i].mass * gravity_ / weight_unit_ * load_direction_;
+      for (int k = 0; k < 3; ++k) (*bounds)[row_of_[i] + k] = -load[k];
+    }
+  }
+
+  bool solve(ClpSimplex* model) const {
+    std::vector<double> bounds;
+    rowBounds(&bounds);
+    model->setLogLevel(0);
+    model->loadProblem(columnCount(), row_count_, column_start_.data(), row_index_.data(),
+                       value_.data(), column_lower_.data(), column_upper_.data(), cost_.data(),
+                       bounds.data(), bounds.data());
+    model->setOptimizationDirection(1.0);
+    // The rows are already in units of weight and size; Clp's own scaling
+    // has been seen to stop at a scaled optimum that is not one unscaled
+    // (secondary status 3) on a plank over a brick.
+    model->scaling(0);
+    model->dual();
+    // Whatever the dual left unfinished, the primal finishes from its basis.
+    if (!model->isProvenOptimal() || model->secondaryStatus() != 0) model->primal(1);
+    return model->isProvenOptimal() && model->secondaryStatus() == 0;
+  }
+
+ private:
+  void addForceOn(int body, const Eigen::Vector3d& point, const Eigen::Vector3d& direction) {
+    if (!free(body)) return;
+    const int row = row_of_[body];
+    const Eigen::Vector3d torque = (point - bodies_[body].com).cross(direction) / length_unit_;
+    for (int k = 0; k < 3; ++k) {
+      add(row + k, direction[k]);
+      add(row + 3 + k, torque[k]);
+    }
+  }
+  void add(int row, double value) {
+    if (value == 0.0) return;
+    row_index_.push_back(row);
+    value_.push_back(value);
+  }
+  void closeColumn(double lower, double upper, double cost) {
+    column_start_.push_back(static_cast<CoinBigIndex>(row_index_.size()));
+    column_lower_.push_back(lower);
+    column_upper_.push_back(upper);
+    cost_.push_back(cost);
+  }
+
+  const std::vector<StaticsBody>& bodies_;
+  std::vector<int> row_of_;
+  int row_count_ = 0;
+  double weight_unit_ = 0.0;
+  double length_unit_ = 1e-9;
+  double gravity_ = 9.81;
+  Eigen::Vector3d load_direction_;
+  std::vector<CoinBigIndex> column_start_;
+  std::vector<int> row_index_;
+  std::vector<double> value_, column_lower_, column_upper_, cost_;
+};
+
+/// The edges of the pyramid inscribed in the friction cone of `c`, unit
+/// normal force each; just the normal when there is no friction.
+std::vector<Eigen::Vector3d> coneEdges(const StaticsContact& c, int faces) {
+  const Eigen::Vector3d n = c.normal.normalized();
+  if (c.friction <= 0.0) return {n};
+  // Edges along the world axes projected on the contact plane: exact for
+  // friction along a brick's axes, the usual direction in a stack.
+  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - n.x() * n;
+  if (t1.norm() < 0.3) t1 = Eigen::Vector3d::UnitY() - n.y() * n;
+  t1.normalize();
+  const Eigen::Vector3d t2 = n.cross(t1);
+  std::vector<Eigen::Vector3d> edges;
+  for (int j = 0; j < faces; ++j) {
+    const double angle = 2.0 * M_PI * j / faces;
+    edges.push_back(n + c.friction * (std::cos(angle) * t1 + std::sin(angle) * t2));
+  }
+  return edges;
+}
+
+/// Adds one column per cone edge of every contact touching a free body;
+/// returns each contact's first column (-1 when it has none).
+std::vector<int> addContactColumns(const std::vector<StaticsContact>& contacts,
+                                   const StaticsOptions& options, EquilibriumLp* lp,
+                                   std::vector<std::vector<Eigen::Vector3d>>* edges) {
+  std::vector<int> first_column;
+  for (const StaticsContact& c : contacts) {
+    edges->push_back(coneEdges(c, std::max(options.friction_faces, 4)));
+    if (!lp->free(c.a) && !lp->free(c.b)) {
+      first_column.push_back(-1);
+      continue;
+    }
+    first_column.push_back(lp->columnCount());
+    for (const Eigen::Vector3d& edge : edges->back()) lp->addForceColumn(c, edge, 0.0);
+  }
+  return first_column;
+}
+
+}  // namespace
+
+StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
+                             const std::vector<StaticsContact>& contacts,
+                             const StaticsOptions& options) {
+  StaticsSolution solution;
+  solution.imbalance.assign(bodies.size(), 0.0);
+  solution.forces.assign(contacts.size(), Eigen::Vector3d::Zero());
+  EquilibriumLp lp(bodies, options);
+  if (lp.rowCount() == 0) {
+    solution.solved = solution.feasible = true;
+    return solution;
+  }
+  lp.measureLevers(contacts);
+  std::vector<std::vector<Eigen::Vector3d>> edges;
+  const std::vector<int> first_column = addContactColumns(contacts, options, &lp, &edges);
+  const int first_imbalance = lp.columnCount();
+  lp.addImbalanceColumns();
+
+  ClpSimplex model;
+  if (!lp.solve(&model)) {
+    // With imbalance columns the LP is always feasible and bounded.
+    solution.message = "the statics LP did not solve (Clp status " +
+                       std::to_string(model.status()) + ", secondary " +
+                       std::to_string(model.secondaryStatus()) + ")";
+    return solution;
+  }
+  solution.solved = true;
+  const double* x = model.getColSolution();
+  double total = 0.0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const int row = lp.rowOf(static_cast<int>(i));
+    if (row < 0) continue;
+    for (int k = 0; k < 6; ++k)
+      solution.imbalance[i] += x[first_imbalance + 2 * (row + k)] +
+                               x[first_imbalance + 2 * (row + k) + 1];
+    total += solution.imbalance[i];
+  }
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    if (first_column[c] < 0) continue;
+    for (std::size_t j = 0; j < edges[c].size(); ++j)
+      solution.forces[c] += x[first_column[c] + j] * lp.weightUnit() * edges[c][j];
+  }
+  solution.feasible = total <= options.tolerance * std::max<std::size_t>(1, bodies.size());
+  for (double& value : solution.imbalance)
+    if (value <= options.tolerance) value = 0.0;
+  return solution;
+}
+
+double horizontalAccelerationMargin(const std::vector<StaticsBody>& bodies,
+                                    const std::vector<StaticsContact>& contacts,
+                                    const Eigen::Vector3d& direction,
+                                    const StaticsOptions& options, double cap) {
+  EquilibriumLp lp(bodies, options);
+  if (lp.rowCount() == 0) return cap;
+  lp.measureLevers(contacts);
+  std::vector<std::vector<Eigen::Vector3d>> edges;
+  addContactColumns(contacts, options, &lp, &edges);
+  const int load_column = lp.columnCount();
+  // The column is the acceleration over g; maximised.
+  lp.addLoadColumn(direction.normalized(), cap / options.gravity, -1.0);
+  ClpSimplex model;
+  if (!lp.solve(&model)) return 0.0;
+  return std::clamp(model.getColSolution()[load_column] * options.gravity, 0.0, cap);
+}
+
+}  // namespace brick_stack_sim

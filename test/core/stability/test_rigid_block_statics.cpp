@@ -1,0 +1,211 @@
+// The statics LP against cases with exact answers (DESIGN.md section 5),
+// each derived by hand in support/leaning.h or below. Contacts come from
+// the boxes' geometry (touchingContacts), as for a brick placed at rest.
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "brick_stack_sim/core/geometry/box_contact.h"
+#include "stability/rigid_block_statics.h"
+#include "support/leaning.h"
+
+namespace brick_stack_sim {
+namespace {
+
+using test::kKaplaLength;
+using test::kKaplaMass;
+using test::kKaplaThickness;
+
+/// Bricks (boxes) on a table, every touching pair a contact with one friction.
+class StaticsScene {
+ public:
+  explicit StaticsScene(double friction) : friction_(friction) {}
+
+  int add(const Eigen::Isometry3d& pose, double mass = kKaplaMass, bool fixed = false,
+          Eigen::Vector3d half_extents = test::kaplaHalfExtents()) {
+    boxes_.push_back(OrientedBox{pose, half_extents});
+    bodies_.push_back(StaticsBody{mass, pose.translation(), fixed});
+    return static_cast<int>(bodies_.size()) - 1;
+  }
+  /// The friction of the pair (i, j) when it differs from the scene's.
+  void setFriction(int i, int j, double friction) { pair_friction_.push_back({i, j, friction}); }
+
+  std::vector<StaticsContact> contacts() const {
+    OrientedBox table;
+    table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.01);
+    table.half_extents = Eigen::Vector3d(1.0, 1.0, 0.01);
+    std::vector<StaticsContact> result;
+    auto add_pair = [&](int a, int b, const OrientedBox& box_b) {
+      for (const BoxContactFace& face : touchingContacts(boxes_[a], box_b, 1e-7))
+        for (const Eigen::Vector3d& point : face.points)
+          result.push_back(StaticsContact{a, b, point, face.normal, frictionOf(a, b)});
+    };
+    for (int a = 0; a < static_cast<int>(boxes_.size()); ++a) {
+      add_pair(a, kStaticsGround, table);
+      for (int b = 0; b < a; ++b) add_pair(a, b, boxes_[b]);
+    }
+    return result;
+  }
+
+  StaticsSolution solve(const StaticsOptions& options = StaticsOptions()) const {
+    return solveStatics(bodies_, contacts(), options);
+  }
+  bool stands() const {
+    const StaticsSolution solution = solve();
+    EXPECT_TRUE(solution.solved) << solution.message;
+    return solution.feasible;
+  }
+
+ private:
+  double frictionOf(int a, int b) const {
+    for (const auto& [i, j, friction] : pair_friction_)
+      if ((i == a && j == b) || (i == b && j == a)) return friction;
+    return friction_;
+  }
+  struct PairFriction {
+    int i, j;
+    double friction;
+  };
+  double friction_;
+  std::vector<OrientedBox> boxes_;
+  std::vector<StaticsBody> bodies_;
+  std::vector<PairFriction> pair_friction_;
+};
+
+Eigen::Isometry3d flatAt(double x, double z) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(x, 0.0, z);
+  return pose;
+}
+
+TEST(RigidBlockStatics, BrickOnTheTableStandsAndNothingLeftIsFree) {
+  StaticsScene scene(0.5);
+  scene.add(flatAt(0.0, 0.5 * kKaplaThickness));
+  const StaticsSolution solution = scene.solve();
+  ASSERT_TRUE(solution.solved);
+  EXPECT_TRUE(solution.feasible);
+  // The table carries the weight: the forces sum to m g up.
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& f : solution.forces) total += f;
+  EXPECT_NEAR(total.z(), kKaplaMass * 9.81, 1e-9);
+  EXPECT_NEAR(total.head<2>().norm(), 0.0, 1e-9);
+}
+
+TEST(RigidBlockStatics, BrickInTheAirIsTheOneThatMustMove) {
+  StaticsScene scene(0.5);
+  const int resting = scene.add(flatAt(0.0, 0.5 * kKaplaThickness));
+  const int floating = scene.add(flatAt(0.3, 0.05));
+  const StaticsSolution solution = scene.solve();
+  EXPECT_FALSE(solution.feasible);
+  EXPECT_EQ(solution.imbalance[resting], 0.0);
+  // Its whole weight is unbalanced, 1 in units of the heaviest weight.
+  EXPECT_NEAR(solution.imbalance[floating], 1.0, 1e-9);
+}
+
+class VOfPlanks : public ::testing::TestWithParam<double> {};
+
+TEST_P(VOfPlanks, StandsBelowTheThresholdAngleAndFallsAbove) {
+  const double mu = GetParam();
+  const double threshold = test::vThresholdAngle(mu);
+  for (double factor : {0.9, 1.1}) {
+    StaticsScene scene(mu);
+    const auto [left, right] = test::vPlanks(factor * threshold);
+    scene.add(left);
+    scene.add(right);
+    EXPECT_EQ(scene.stands(), factor < 1.0) << "mu " << mu << ", " << factor << " x threshold";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(TwoFrictions, VOfPlanks, ::testing::Values(0.3, 0.5));
+
+TEST(RigidBlockStatics, OnePlankOfAVAloneFalls) {
+  StaticsScene scene(0.5);
+  scene.add(test::vPlanks(0.5).first);
+  EXPECT_FALSE(scene.stands());
+}
+
+class Ladder : public ::testing::TestWithParam<double> {};
+
+TEST_P(Ladder, PlankAgainstAHeavyBlockStandsByItsOwnFormula) {
+  const double mu = 0.4, mu_wall = GetParam();
+  const double threshold = test::ladderThresholdAngle(mu, mu_wall);
+  for (double factor : {0.9, 1.1}) {
+    StaticsScene scene(mu);
+    const int plank = scene.add(test::plankLeaningTowardsX(factor * threshold, 0.0));
+    // A block of 50 plank masses whose face is the plane x = 0: the wall.
+    const Eigen::Vector3d wall_half(0.05, 0.05, 0.1);
+    const int wall = scene.add(flatAt(wall_half.x(), wall_half.z()), 50 * kKaplaMass, false,
+                               wall_half);
+    scene.setFriction(plank, wall, mu_wall);
+    EXPECT_EQ(scene.stands(), factor < 1.0) << "wall friction " << mu_wall << ", " << factor;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(WithAndWithoutWallFriction, Ladder, ::testing::Values(0.0, 0.3));
+
+/// A harmonic stack (DESIGN.md section 5): brick i from the top sits f L / (2 i)
+/// beyond the one below it, the bottom one on the table's edge... here on a
+/// fixed base brick. It stands for f < 1 and falls for f > 1.
+bool harmonicStackStands(int n, double f) {
+  StaticsScene scene(0.5);
+  const double t = kKaplaThickness;
+  scene.add(flatAt(0.0, 0.5 * t), kKaplaMass, /*fixed=*/true);
+  double x = 0.0;
+  // From the bottom: brick n (the lowest free one) down to 1 (the top).
+  for (int i = n; i >= 1; --i) {
+    x += f * kKaplaLength / (2.0 * i);
+    scene.add(flatAt(x, (n - i + 1.5) * t));
+  }
+  return scene.stands();
+}
+
+TEST(RigidBlockStatics, HarmonicStacksFindTheirThresholdWithinOnePercent) {
+  for (int n : {4, 8, 12}) {
+    EXPECT_TRUE(harmonicStackStands(n, 0.99)) << n << " bricks";
+    EXPECT_FALSE(harmonicStackStands(n, 1.01)) << n << " bricks";
+  }
+}
+
+/// Bricks of one KAPLA each, flat, one per level from the table up, centred
+/// at `x[i]` (fractions of L).
+bool flatStackStands(const std::vector<double>& x) {
+  StaticsScene scene(0.5);
+  for (std::size_t level = 0; level < x.size(); ++level)
+    scene.add(flatAt(x[level] * kKaplaLength, (level + 0.5) * kKaplaThickness));
+  return scene.stands();
+}
+
+TEST(RigidBlockStatics, CounterweightsHoldOverhangsThatFallWithoutThem) {
+  // Base at 0 (its edge at 0.5 L); a plank at 0.7 L overhangs it, its COM
+  // 0.2 L past the edge. A counterweight at 0.25 L on its inner end (0.05 L
+  // inside its end at 0.2 L) brings the pair's COM to 0.475 L, inside.
+  EXPECT_TRUE(flatStackStands({0.0, 0.7, 0.25}));
+  EXPECT_FALSE(flatStackStands({0.0, 0.7}));
+  // Four: the plank at 0.75 L, a counterweight at 0.35 L (pair COM 0.55 L:
+  // out) and a second on it at 0.25 L: the three at 0.45 L, inside; the two
+  // counterweights at 0.3 L, inside the plank's end at 0.25 L.
+  EXPECT_TRUE(flatStackStands({0.0, 0.75, 0.35, 0.25}));
+  EXPECT_FALSE(flatStackStands({0.0, 0.75, 0.35}));
+}
+
+TEST(RigidBlockStatics, AccelerationMarginIsWhereItSlidesOrTips) {
+  // Flat on the table it slides first: mu g. On its end it tips about an
+  // edge first: g (T/2) / (L/2), below mu g.
+  const double mu = 0.5, g = 9.81;
+  StaticsScene flat(mu);
+  flat.add(flatAt(0.0, 0.5 * kKaplaThickness));
+  std::vector<StaticsBody> bodies{{kKaplaMass, flatAt(0.0, 0.5 * kKaplaThickness).translation(), false}};
+  EXPECT_NEAR(horizontalAccelerationMargin(bodies, flat.contacts(), Eigen::Vector3d::UnitX()),
+              mu * g, 1e-6);
+  StaticsScene standing(mu);
+  const Eigen::Isometry3d on_end = test::plankLeaningTowardsX(0.0, 0.5 * kKaplaThickness);
+  standing.add(on_end);
+  bodies[0].com = on_end.translation();
+  EXPECT_NEAR(horizontalAccelerationMargin(bodies, standing.contacts(), Eigen::Vector3d::UnitX()),
+              g * kKaplaThickness / kKaplaLength, 1e-6);
+}
+
+}  // namespace
+}  // namespace brick_stack_sim
