@@ -32,11 +32,13 @@ WakeDecision ComCriterion::outsideSupport(BodyHandle brick, double margin) const
 }
 
 std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
-                                              const std::vector<BodyHandle>& load_order) const {
+                                              const std::vector<BodyHandle>& component) const {
+  std::vector<BodyHandle> load_order, cyclic;
+  graph->loadOrder(component, &load_order, &cyclic);
+  std::vector<WakeDecision> unstable;
   // Each brick's loads arrive from the bricks it carries, all before its own
   // turn in the load order, and are summed in the order they arrive.
   for (BodyHandle handle : load_order) graph->find(handle)->received.clear();
-  std::vector<WakeDecision> unstable;
   std::vector<LoadShare> shares;
   for (BodyHandle handle : load_order) {
     SupportGraph::Node& node = *graph->find(handle);
@@ -73,6 +75,10 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
       below->received.push_back(shares[i]);
     }
   }
+  // No order in which loads flow down: nothing can be said to carry them.
+  for (BodyHandle handle : cyclic)
+    unstable.push_back(WakeDecision{handle, WakeCause::kSupportCycle, handle, 0.0,
+                                    "its supports form a cycle"});
   return unstable;
 }
 

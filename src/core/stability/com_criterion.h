@@ -18,7 +18,7 @@ class ComCriterion : public StabilityCriterion {
   bool admits(const BodyMotion& brick, const BrickStability& stability,
               FreezeDecision* decision) const override;
   std::vector<WakeDecision> check(SupportGraph* graph,
-                                  const std::vector<BodyHandle>& load_order) const override;
+                                  const std::vector<BodyHandle>& component) const override;
 
  private:
   WakeDecision outsideSupport(BodyHandle brick, double margin) const;

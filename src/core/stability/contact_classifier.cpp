@@ -22,32 +22,54 @@ const std::vector<const PairContact*>& ContactIndex::of(BodyHandle handle) const
   return found == by_body_.end() ? kNoContacts : found->second;
 }
 
+namespace {
+
+void addToPatch(const PairContact& contact, const Eigen::Vector3d& towards_body,
+                BodyHandle supporter, std::map<BodyHandle, SupportPatch>* by_supporter) {
+  SupportPatch& patch = (*by_supporter)[supporter];
+  patch.supporter = supporter;
+  patch.friction = contact.friction;
+  patch.points.insert(patch.points.end(), contact.points.begin(), contact.points.end());
+  patch.normals.insert(patch.normals.end(), contact.points.size(), towards_body);
+}
+
+std::vector<SupportPatch> inOrder(std::map<BodyHandle, SupportPatch>* by_supporter) {
+  std::vector<SupportPatch> patches;
+  for (auto& entry : *by_supporter) patches.push_back(std::move(entry.second));
+  return patches;
+}
+
+}  // namespace
+
 std::vector<SupportPatch> supportPatches(const BodyMotion& body,
                                          const std::vector<const PairContact*>& contacts,
-                                         const SupportGraph& graph,
-                                         const StabilityOptions& options) {
+                                         const SupporterTest& can_support,
+                                         const StabilityOptions& options,
+                                         std::vector<SupportPatch>* side_contacts) {
   const double vertical = std::cos(options.support_normal_tolerance);
-  std::map<BodyHandle, SupportPatch> by_supporter;
+  std::map<BodyHandle, SupportPatch> below, beside;
   for (const PairContact* contact : contacts) {
-    BodyHandle supporter;
-    if (contact->a == body.handle && contact->normal.z() >= vertical) {
-      supporter = contact->b;  // the normal points from b up to this brick
-    } else if (contact->b == body.handle && contact->normal.z() <= -vertical) {
-      supporter = contact->a;
-    } else {
-      continue;  // a side contact, or this brick is the lower one
-    }
+    const bool is_a = contact->a == body.handle;
+    if (!is_a && contact->b != body.handle) continue;
+    const BodyHandle other = is_a ? contact->b : contact->a;
+    // The normal points from b to a: turned to point at this brick.
+    const Eigen::Vector3d towards_body = is_a ? contact->normal : Eigen::Vector3d(-contact->normal);
     // The thesis drops contacts between two unstable bricks: a stack cannot
     // start on a moving brick. Impacts are not support either.
-    if (!graph.canSupport(supporter)) continue;
+    if (!can_support(other)) continue;
     if (contact->approach_speed > options.impact_speed) continue;
-    SupportPatch& patch = by_supporter[supporter];
-    patch.supporter = supporter;
-    patch.points.insert(patch.points.end(), contact->points.begin(), contact->points.end());
+    if (towards_body.z() >= vertical) {
+      addToPatch(*contact, towards_body, other, &below);
+    } else if (side_contacts) {
+      addToPatch(*contact, towards_body, other, &beside);
+    }
   }
-  std::vector<SupportPatch> supports;
-  for (auto& entry : by_supporter) supports.push_back(std::move(entry.second));
-  return supports;
+  if (side_contacts) *side_contacts = inOrder(&beside);
+  return inOrder(&below);
+}
+
+SupporterTest frozenOrGround(const SupportGraph& graph) {
+  return [&graph](BodyHandle handle) { return graph.canSupport(handle); };
 }
 
 void refineFlushPatches(const std::function<OrientedBox(BodyHandle)>& box_of,

@@ -24,15 +24,25 @@ class ContactIndex {
   std::unordered_map<BodyHandle, std::vector<const PairContact*>> by_body_;
 };
 
+/// May a brick rest on (or lean on) this body and join the stack? Frozen
+/// bricks and the ground, and for a group judged together its members.
+using SupporterTest = std::function<bool(BodyHandle)>;
+
 /// The support patches of `body` among its `contacts`: one per supporter,
 /// from the contacts whose normal is within `support_normal_tolerance` of
-/// vertical with `body` on top, whose supporter is frozen or the ground (a
+/// vertical with `body` on top, whose supporter passes `can_support` (a
 /// stack cannot start on a moving brick) and that do not close faster than
-/// `impact_speed` (an impact is not support). In supporter order.
+/// `impact_speed` (an impact is not support). In supporter order. When
+/// `side_contacts` is given, the other contacts with such supporters go
+/// there, one patch per supporter too.
 std::vector<SupportPatch> supportPatches(const BodyMotion& body,
                                          const std::vector<const PairContact*>& contacts,
-                                         const SupportGraph& graph,
-                                         const StabilityOptions& options);
+                                         const SupporterTest& can_support,
+                                         const StabilityOptions& options,
+                                         std::vector<SupportPatch>* side_contacts = nullptr);
+
+/// Frozen bricks and the ground of `graph`.
+SupporterTest frozenOrGround(const SupportGraph& graph);
 
 /// Where two faces rest flush (parallel within `flush_angle`), the patch is
 /// their exact overlap rather than the points Bullet kept: its box-box

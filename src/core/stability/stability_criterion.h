@@ -22,11 +22,25 @@ class StabilityCriterion {
   /// when it may, `decision` says how (stable or leaning) and why.
   virtual bool admits(const BodyMotion& brick, const BrickStability& stability,
                       FreezeDecision* decision) const = 0;
-  /// Judges one component of `graph` after a change, its bricks in load
-  /// order (each after all it carries): updates each node's stability and
-  /// returns the bricks that cannot stay, with their reasons.
+  /// Judges one component of `graph` after a change (its bricks in handle
+  /// order): updates each node's stability and returns the bricks that
+  /// cannot stay, with their reasons.
   virtual std::vector<WakeDecision> check(SupportGraph* graph,
-                                          const std::vector<BodyHandle>& load_order) const = 0;
+                                          const std::vector<BodyHandle>& component) const = 0;
+
+  /// Whether it judges side contacts (leaning): the model then gathers them
+  /// (BrickStability::side_contacts) and may ask it about groups.
+  virtual bool usesSideContacts() const { return false; }
+  /// Whether `group`, bricks at rest that touch each other and none of
+  /// which `admits` alone (the planks of a V, a plank and its counterweight),
+  /// may join the stack together, their supports among frozen bricks, the
+  /// ground and each other as given; when they may, one decision per member,
+  /// in the group's order.
+  virtual bool admitsGroup(const std::vector<BodyMotion>& /*group*/,
+                           const std::vector<BrickStability>& /*stability*/,
+                           std::vector<FreezeDecision>* /*decisions*/) const {
+    return false;
+  }
 };
 
 }  // namespace brick_stack_sim

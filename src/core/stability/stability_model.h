@@ -14,12 +14,16 @@
 
 namespace brick_stack_sim {
 
-/// One support of a brick: the patch where it rests on `supporter`.
+/// One support of a brick: the patch where it rests on `supporter`, or
+/// (among a brick's side contacts) where it leans on or touches it.
 struct SupportPatch {
   BodyHandle supporter = 0;
   std::vector<Eigen::Vector3d> points;  ///< Contact points, world [m].
-  Polygon2d hull;                       ///< Their hull, projected along gravity.
-  double height = 0.0;                  ///< Mean z of the points [m].
+  /// Per point: unit, from the supporter towards the brick.
+  std::vector<Eigen::Vector3d> normals;
+  double friction = 0.0;  ///< Coulomb coefficient of the pair [-].
+  Polygon2d hull;         ///< The points' hull, projected along gravity.
+  double height = 0.0;    ///< Mean z of the points [m].
 };
 
 /// What a stability model knows about one brick.
@@ -29,6 +33,10 @@ struct BrickStability {
   double mass_above = 0.0;                              ///< [kg]
   double margin = 0.0;  ///< Signed distance of the COM-above projection to the support hull [m].
   std::vector<SupportPatch> supports;
+  /// Contacts with frozen bricks or the ground that do not carry it from
+  /// below (it leans on them, or touches them beside it or above it), for
+  /// the models that judge them (criteria with usesSideContacts()).
+  std::vector<SupportPatch> side_contacts;
   Polygon2d combined_hull;      ///< Hull of all support patches.
   double support_height = 0.0;  ///< Mean height of the supports [m].
 };
@@ -122,6 +130,11 @@ class StabilityModel {
   /// bounce the mover off a static collider (impacts). Nothing by default.
   virtual void beforeBulletStep(double /*dt*/, const std::vector<Approach>& /*approaches*/,
                                 StabilityDecisions* /*decisions*/) {}
+
+  /// Whether the model judges bricks that lean (contacts away from
+  /// vertical); the world finds such contacts from geometry for a brick
+  /// placed at rest only when it does.
+  virtual bool judgesLeaning() const { return false; }
 
   /// The decision path: one step, or one change between steps.
   virtual void decide(const StabilityInput& input, StabilityDecisions* decisions) = 0;

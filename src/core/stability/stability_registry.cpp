@@ -1,6 +1,7 @@
 #include "stability/stability_registry.h"
 
 #include "stability/com_criterion.h"
+#include "stability/equilibrium_criterion.h"
 #include "stability/stack_stability_model.h"
 #include "util/text_format.h"
 
@@ -21,6 +22,12 @@ std::unique_ptr<StabilityModel> createComModel(const StabilityOptions& options, 
   return std::make_unique<StackStabilityModel>(options, std::move(name_of), std::move(criterion));
 }
 
+std::unique_ptr<StabilityModel> createEquilibriumModel(const StabilityOptions& options,
+                                                       BodyNamer name_of) {
+  auto criterion = std::make_unique<EquilibriumCriterion>(options, name_of);
+  return std::make_unique<StackStabilityModel>(options, std::move(name_of), std::move(criterion));
+}
+
 /// Every mode of this build: a new model is a new criterion and a line here.
 const ModeEntry kModes[] = {
     {"none", "plain Bullet, the baseline every benchmark compares against", nullptr},
@@ -28,6 +35,10 @@ const ModeEntry kModes[] = {
      "the thesis's stack stability layer: bricks resting stably are frozen, woken when their "
      "COM-above leaves their support",
      &createComModel},
+    {"equilibrium",
+     "exact rigid-block statics: a linear program over contact forces with Coulomb friction "
+     "(COIN-OR Clp) judges every freeze and wake, leaning bricks and card houses included",
+     &createEquilibriumModel},
 };
 
 const ModeEntry* findMode(const std::string& mode) {

@@ -15,6 +15,8 @@ StackStabilityModel::StackStabilityModel(const StabilityOptions& options, BodyNa
       rest_(options) {}
 
 void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions* decisions) {
+  // Bullet has moved them: what was placed at rest is no longer where it was.
+  if (input.dt > 0.0) unjudged_.clear();
   for (BodyHandle removed : input.removed) forget(removed, decisions);
   for (BodyHandle pushed : input.pushed) {
     if (graph_.contains(pushed))
@@ -28,6 +30,7 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
 
 void StackStabilityModel::forget(BodyHandle brick, StabilityDecisions* decisions) {
   rest_.erase(brick);
+  unjudged_.erase(brick);
   for (BodyHandle upper : graph_.erase(brick)) {
     wakeWithLoad(WakeDecision{upper, WakeCause::kSupporterRemoved, brick, 0.0,
                               "its supporter " + name_of_(brick) + " was removed"},
@@ -38,7 +41,9 @@ void StackStabilityModel::forget(BodyHandle brick, StabilityDecisions* decisions
 bool StackStabilityModel::evaluateMover(const BodyMotion& body,
                                         const std::vector<const PairContact*>& contacts,
                                         BrickStability* stability, FreezeDecision* decision) const {
-  stability->supports = supportPatches(body, contacts, graph_, options_);
+  stability->supports =
+      supportPatches(body, contacts, frozenOrGround(graph_), options_,
+                     criterion_->usesSideContacts() ? &stability->side_contacts : nullptr);
   criterion_->evaluate(body, stability);
   return criterion_->admits(body, *stability, decision);
 }
@@ -50,8 +55,50 @@ void StackStabilityModel::placeAtRest(const RestingPlacement& placed,
   stability = BrickStability();
   stability.mass_above = placed.brick.mass;
   FreezeDecision decision;
-  if (evaluateMover(placed.brick, index.of(placed.brick.handle), &stability, &decision))
-    freeze(placed.brick, std::move(decision), stability.supports, decisions);
+  if (evaluateMover(placed.brick, index.of(placed.brick.handle), &stability, &decision)) {
+    freeze(placed.brick, std::move(decision), stability, decisions);
+    return;
+  }
+  if (!criterion_->usesSideContacts()) return;
+  unjudged_[placed.brick.handle] = placed;
+  admitGroupAtRest(placed.brick.handle, decisions);
+}
+
+void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions) {
+  // A brick placed earlier saw none of the later ones: the contacts of all
+  // of them together name every pair once.
+  std::vector<PairContact> contacts;
+  for (const auto& entry : unjudged_)
+    contacts.insert(contacts.end(), entry.second.contacts.begin(), entry.second.contacts.end());
+  const ContactIndex index(&contacts);
+  std::vector<BodyHandle> group{newest};
+  for (std::size_t next = 0; next < group.size(); ++next) {
+    for (const PairContact* contact : index.of(group[next])) {
+      const BodyHandle other = contact->a == group[next] ? contact->b : contact->a;
+      if (unjudged_.count(other) && std::find(group.begin(), group.end(), other) == group.end())
+        group.push_back(other);
+    }
+  }
+  if (group.size() < 2) return;
+  std::sort(group.begin(), group.end());
+  const SupporterTest frozen_or_member = [&](BodyHandle handle) {
+    return graph_.canSupport(handle) || std::binary_search(group.begin(), group.end(), handle);
+  };
+  std::vector<BodyMotion> bodies;
+  std::vector<BrickStability> stability(group.size());
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    bodies.push_back(unjudged_.at(group[i]).brick);
+    stability[i].mass_above = bodies[i].mass;
+    stability[i].supports = supportPatches(bodies[i], index.of(group[i]), frozen_or_member,
+                                           options_, &stability[i].side_contacts);
+    criterion_->evaluate(bodies[i], &stability[i]);
+  }
+  std::vector<FreezeDecision> admitted;
+  if (!criterion_->admitsGroup(bodies, stability, &admitted)) return;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
+    unjudged_.erase(group[i]);
+  }
 }
 
 void StackStabilityModel::advanceMovers(const StabilityInput& input,
@@ -64,7 +111,8 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
     mover.stability.mass_above = body.mass;
     // A moving brick cannot join the stack; its supports are not worth a hull.
     if (rest_.atRest(body))
-      mover.stability.supports = supportPatches(body, index.of(body.handle), graph_, options_);
+      mover.stability.supports =
+          supportPatches(body, index.of(body.handle), frozenOrGround(graph_), options_);
     criterion_->evaluate(body, &mover.stability);
     if (mover.rest_time >= options_.rest_time) resting.push_back(&body);
   }
@@ -77,7 +125,7 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       BrickStability& stability = rest_.record(body->handle).stability;
       FreezeDecision decision;
       if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) continue;
-      freeze(*body, std::move(decision), stability.supports, decisions);
+      freeze(*body, std::move(decision), stability, decisions);
       body = nullptr;
       froze = true;
     }
@@ -85,9 +133,9 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
 }
 
 void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision,
-                                 std::vector<SupportPatch> supports,
-                                 StabilityDecisions* decisions) {
-  graph_.add(body.handle, body.com, body.mass, std::move(supports));
+                                 BrickStability stability, StabilityDecisions* decisions) {
+  graph_.add(body.handle, body.com, body.mass, std::move(stability.supports),
+             std::move(stability.side_contacts));
   rest_.erase(body.handle);
   decisions->freeze.push_back(std::move(decision));
 }
@@ -118,14 +166,8 @@ void StackStabilityModel::settle(SupportGraph* graph, RestTracker* rest,
     std::vector<WakeDecision> unstable;
     for (const std::vector<BodyHandle>& component : graph->takeChangedComponents()) {
       if (component.empty()) continue;
-      std::vector<BodyHandle> order, cyclic;
-      graph->loadOrder(component, &order, &cyclic);
-      std::vector<WakeDecision> found = criterion_->check(graph, order);
+      std::vector<WakeDecision> found = criterion_->check(graph, component);
       unstable.insert(unstable.end(), found.begin(), found.end());
-      // No order in which loads flow down: nothing can be said to carry them.
-      for (BodyHandle handle : cyclic)
-        unstable.push_back(WakeDecision{handle, WakeCause::kSupportCycle, handle, 0.0,
-                                        "its supports form a cycle"});
     }
     for (const WakeDecision& decision : unstable) wakeWithLoad(decision, graph, rest, decisions);
   }
@@ -141,6 +183,11 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
   const bool admitted = evaluateMover(brick, index.of(brick.handle), &stability, &decision);
   result.margin = stability.margin;
   for (const SupportPatch& patch : stability.supports) result.supporters.push_back(patch.supporter);
+  for (const SupportPatch& patch : stability.side_contacts)
+    result.supporters.push_back(patch.supporter);
+  std::sort(result.supporters.begin(), result.supporters.end());
+  result.supporters.erase(std::unique(result.supporters.begin(), result.supporters.end()),
+                          result.supporters.end());
   if (!admitted) {
     result.reason = stability.supports.empty()
                         ? "it would rest on nothing that is frozen or the ground"
@@ -149,7 +196,7 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
   }
   // Its load on the stack below, judged on a copy of the components it joins.
   SupportGraph what_if = graph_.componentsOf(result.supporters);
-  what_if.add(brick.handle, brick.com, brick.mass, stability.supports);
+  what_if.add(brick.handle, brick.com, brick.mass, stability.supports, stability.side_contacts);
   StabilityDecisions consequences;
   settle(&what_if, nullptr, &consequences);
   for (const WakeDecision& woken : consequences.wake)

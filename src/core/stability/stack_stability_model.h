@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 
 #include "stability/rest_tracker.h"
@@ -21,6 +22,7 @@ class StackStabilityModel : public StabilityModel {
   StackStabilityModel(const StabilityOptions& options, BodyNamer name_of,
                       std::unique_ptr<StabilityCriterion> criterion);
 
+  bool judgesLeaning() const override { return criterion_->usesSideContacts(); }
   void decide(const StabilityInput& input, StabilityDecisions* decisions) override;
   PlacementEvaluation evaluatePlacement(const BodyMotion& brick,
                                         const std::vector<PairContact>& contacts) const override;
@@ -29,8 +31,13 @@ class StackStabilityModel : public StabilityModel {
  private:
   /// A brick left the world: what it carried wakes.
   void forget(BodyHandle brick, StabilityDecisions* decisions);
-  /// A brick placed at rest joins at once when the criterion admits it.
+  /// A brick placed at rest joins at once when the criterion admits it,
+  /// alone or with the bricks placed at rest at the same instant that it
+  /// touches (Bullet cannot hold a V for one step: it is judged now or never).
   void placeAtRest(const RestingPlacement& placed, StabilityDecisions* decisions);
+  /// The bricks placed at rest, not yet admitted, that `newest` reaches
+  /// through contacts among them: admitted together when the criterion says so.
+  void admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions);
   /// The step's movers: rest times, candidate supports, and freezing from the
   /// bottom up (a brick at rest on one that freezes now may freeze too).
   void advanceMovers(const StabilityInput& input, StabilityDecisions* decisions);
@@ -38,7 +45,7 @@ class StackStabilityModel : public StabilityModel {
   /// true (and `decision`) when the criterion admits it.
   bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
                      BrickStability* stability, FreezeDecision* decision) const;
-  void freeze(const BodyMotion& body, FreezeDecision decision, std::vector<SupportPatch> supports,
+  void freeze(const BodyMotion& body, FreezeDecision decision, BrickStability stability,
               StabilityDecisions* decisions);
   /// Wakes `first.brick` and everything it carries; `rest` (when given)
   /// starts each over as a mover.
@@ -52,6 +59,8 @@ class StackStabilityModel : public StabilityModel {
   std::unique_ptr<StabilityCriterion> criterion_;
   SupportGraph graph_;
   RestTracker rest_;
+  /// Bricks placed at rest since the last step that did not join alone.
+  std::map<BodyHandle, RestingPlacement> unjudged_;
 };
 
 }  // namespace brick_stack_sim

@@ -15,16 +15,36 @@ SupportGraph::Node* SupportGraph::find(BodyHandle brick) {
   return found == nodes_.end() ? nullptr : &found->second;
 }
 
+namespace {
+
+bool listsSupporter(const std::vector<SupportPatch>& patches, BodyHandle supporter) {
+  return std::any_of(patches.begin(), patches.end(),
+                     [&](const SupportPatch& patch) { return patch.supporter == supporter; });
+}
+
+}  // namespace
+
 void SupportGraph::add(BodyHandle brick, const Eigen::Vector3d& com, double mass,
-                       std::vector<SupportPatch> supports) {
+                       std::vector<SupportPatch> supports,
+                       std::vector<SupportPatch> side_contacts) {
   Node& node = nodes_[brick];
   node.com = com;
   node.mass = mass;
   node.supports = std::move(supports);
-  for (const SupportPatch& patch : node.supports) {
-    auto supporter = nodes_.find(patch.supporter);
-    if (supporter != nodes_.end()) supporter->second.carries.insert(brick);
-  }
+  node.side_contacts = std::move(side_contacts);
+  // Links both ways: a brick of a group frozen together may already list
+  // this one, which did not exist in the graph when it joined.
+  auto link = [&](BodyHandle neighbour) {
+    auto found = nodes_.find(neighbour);
+    if (found == nodes_.end()) return;
+    Node& other = found->second;
+    if (listsSupporter(node.supports, neighbour)) other.carries.insert(brick);
+    if (listsSupporter(node.side_contacts, neighbour)) other.leaned_on_by.insert(brick);
+    if (listsSupporter(other.supports, brick)) node.carries.insert(neighbour);
+    if (listsSupporter(other.side_contacts, brick)) node.leaned_on_by.insert(neighbour);
+  };
+  for (const SupportPatch& patch : node.supports) link(patch.supporter);
+  for (const SupportPatch& patch : node.side_contacts) link(patch.supporter);
   dirty_.insert(brick);
 }
 
@@ -34,6 +54,12 @@ void SupportGraph::unlinkFromSupporters(BodyHandle brick, const Node& node) {
     if (supporter == nodes_.end()) continue;
     supporter->second.carries.erase(brick);
     dirty_.insert(patch.supporter);  // its load changed
+  }
+  for (const SupportPatch& patch : node.side_contacts) {
+    auto other = nodes_.find(patch.supporter);
+    if (other == nodes_.end()) continue;
+    other->second.leaned_on_by.erase(brick);
+    dirty_.insert(patch.supporter);
   }
 }
 
@@ -50,6 +76,7 @@ std::vector<SupportGraph::Detached> SupportGraph::detachWithLoad(BodyHandle bric
     unlinkFromSupporters(handle, node);
     dirty_.erase(handle);
     for (BodyHandle upper : node.carries) queue.emplace_back(upper, handle);
+    for (BodyHandle leaning : node.leaned_on_by) queue.emplace_back(leaning, handle);
     detached.push_back(Detached{handle, carried_by, std::move(node)});
   }
   return detached;
@@ -59,6 +86,7 @@ std::set<BodyHandle> SupportGraph::erase(BodyHandle brick) {
   auto it = nodes_.find(brick);
   if (it == nodes_.end()) return {};
   std::set<BodyHandle> carried = it->second.carries;
+  carried.insert(it->second.leaned_on_by.begin(), it->second.leaned_on_by.end());
   unlinkFromSupporters(brick, it->second);
   nodes_.erase(it);
   dirty_.erase(brick);
@@ -80,7 +108,9 @@ std::vector<BodyHandle> SupportGraph::componentOf(BodyHandle start,
       if (!isGround(next) && seen->insert(next).second) queue.push_back(next);
     };
     for (const SupportPatch& patch : it->second.supports) visit(patch.supporter);
+    for (const SupportPatch& patch : it->second.side_contacts) visit(patch.supporter);
     for (BodyHandle upper : it->second.carries) visit(upper);
+    for (BodyHandle leaning : it->second.leaned_on_by) visit(leaning);
   }
   std::sort(component.begin(), component.end());
   return component;

@@ -22,7 +22,11 @@ class SupportGraph {
     Eigen::Vector3d com = Eigen::Vector3d::Zero();  ///< [m]
     double mass = 0.0;                              ///< [kg]
     std::vector<SupportPatch> supports;  ///< One patch per supporter, in supporter order.
-    std::set<BodyHandle> carries;        ///< Frozen bricks resting on it.
+    /// Where it leans on or touches frozen bricks or the ground other than
+    /// from above (BrickStability::side_contacts); empty for the COM rule.
+    std::vector<SupportPatch> side_contacts;
+    std::set<BodyHandle> carries;       ///< Frozen bricks resting on it.
+    std::set<BodyHandle> leaned_on_by;  ///< Frozen bricks with a side contact on it.
     /// The loads the bricks it carries pass down, where they act, as a
     /// load-passing criterion found them in its last check (kept here, not
     /// rebuilt, so a check allocates nothing for bricks it saw before).
@@ -44,15 +48,17 @@ class SupportGraph {
   bool canSupport(BodyHandle handle) const { return isGround(handle) || contains(handle); }
   std::size_t size() const { return nodes_.size(); }
 
-  /// `brick` joins, linked under its frozen supporters; its component is dirty.
+  /// `brick` joins, linked under its frozen supporters and beside what its
+  /// side contacts touch (both ways: bricks of a group frozen together list
+  /// each other); its component is dirty.
   void add(BodyHandle brick, const Eigen::Vector3d& com, double mass,
-           std::vector<SupportPatch> supports);
-  /// Takes `brick` and, breadth first, everything it carries out of the
-  /// graph, in the order they leave; their supporters that stay are dirty
-  /// (their load changed). Empty when `brick` is not in the graph.
+           std::vector<SupportPatch> supports, std::vector<SupportPatch> side_contacts = {});
+  /// Takes `brick` and, breadth first, everything it carries or that leans
+  /// on it out of the graph, in the order they leave; their supporters that
+  /// stay are dirty (their load changed). Empty when `brick` is not in the graph.
   std::vector<Detached> detachWithLoad(BodyHandle brick);
-  /// Takes `brick` alone out (it leaves the world); returns what it carried,
-  /// which stays in the graph without its support.
+  /// Takes `brick` alone out (it leaves the world); returns what it carried
+  /// or what leaned on it, which stays in the graph without that support.
   std::set<BodyHandle> erase(BodyHandle brick);
 
   bool hasChanges() const { return !dirty_.empty(); }

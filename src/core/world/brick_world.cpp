@@ -154,6 +154,7 @@ void BrickWorld::step() {
   StepContext step;
   for (const BrickRecord* brick : w.sets.movers()) step.awake += w.scene.isActive(brick->handle);
   ++w.cost.steps;
+  w.placed_at_rest.clear();
   // Plain Bullet (mode none) is the baseline and always steps; with a model,
   // a world where nothing is awake has nothing for Bullet to do.
   step.advance_bullet = !w.model || step.awake > 0;
@@ -225,8 +226,9 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
     input.placed.push_back(
         {BodyMotion{brick->handle, placement.pose.translation(), brick->type.mass,
                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-         restingContacts(w, brick->handle, w.boxOf(brick->handle), low, high)});
+         restingContacts(w, brick->handle, brick->type.friction, w.boxOf(brick->handle), low, high)});
     decide(&w, input);
+    if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
   }
   return Status::success();
 }
@@ -254,6 +256,9 @@ Status BrickWorld::removeBrick(const std::string& id) {
     w.scene.activate(other->handle);
   }
   w.sets.leave(brick);
+  w.placed_at_rest.erase(
+      std::remove(w.placed_at_rest.begin(), w.placed_at_rest.end(), brick->handle),
+      w.placed_at_rest.end());
   w.scene.removeBrick(brick->handle);
   w.contacts.clear();
   w.model_changed = true;
@@ -315,7 +320,7 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
   const PlacementEvaluation evaluation =
       w.model->evaluatePlacement(BodyMotion{handle, placement.pose.translation(), type.mass,
                                             Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-                                 restingContacts(w, handle, box, bounds.min(), bounds.max()));
+                                 restingContacts(w, handle, type.friction, box, bounds.min(), bounds.max()));
   PlacementReport result;
   result.stable = evaluation.stable;
   result.state = evaluation.kind;

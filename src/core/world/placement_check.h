@@ -17,12 +17,14 @@ struct WorldState;
 /// message names what is wrong and its value.
 Status checkPlacement(const WorldState& world, const BrickPlacement& placement);
 
-/// The flush supports of a brick resting at `box` (handle `brick`, whose
-/// bounds are `low`..`high` [m]) on the table and the frozen bricks, found
-/// from geometry: a brick placed at rest is judged before Bullet's first,
-/// unconverged steps can rock it.
+/// The contacts of a brick resting at `box` (handle `brick`, of a material
+/// with `friction`, whose bounds are `low`..`high` [m]) with the table and
+/// the frozen bricks, found from geometry: a brick placed at rest is judged
+/// before Bullet's first, unconverged steps can rock it. Flush supports
+/// always; for a model that judges leaning, every touching face too, and the
+/// bricks placed at rest since the last step.
 std::vector<PairContact> restingContacts(const WorldState& world, BodyHandle brick,
-                                         const OrientedBox& box, const Eigen::Vector3d& low,
-                                         const Eigen::Vector3d& high);
+                                         double friction, const OrientedBox& box,
+                                         const Eigen::Vector3d& low, const Eigen::Vector3d& high);
 
 }  // namespace brick_stack_sim

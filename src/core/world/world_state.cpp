@@ -80,6 +80,10 @@ OrientedBox WorldState::boxOf(BodyHandle handle) const {
   return box;
 }
 
+double WorldState::frictionOf(BodyHandle handle) const {
+  return isGround(handle) ? options.table.friction : bricks.find(handle)->type.friction;
+}
+
 BodyMotion WorldState::motionOf(const BrickRecord& brick) const {
   return BodyMotion{brick.handle, scene.centreOfMass(brick.handle), brick.type.mass,
                     scene.linearVelocity(brick.handle), scene.angularVelocity(brick.handle)};

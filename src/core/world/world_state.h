@@ -52,6 +52,9 @@ struct WorldState {
   /// The model has something new to look at without a Bullet step: a brick
   /// placed, removed, frozen or woken.
   bool model_changed = false;
+  /// Movers placed at rest since the last step: Bullet has not moved them,
+  /// so a brick placed at rest against one is judged with it (a V).
+  std::vector<BodyHandle> placed_at_rest;
   unsigned next_serial = 0;
   CostCounters cost;
   std::vector<SimEvent> events;
@@ -64,6 +67,8 @@ struct WorldState {
   /// The box of a brick (its pose in Bullet), of the table, or of the floor
   /// as a slab far wider than anything that can land on it.
   OrientedBox boxOf(BodyHandle handle) const;
+  /// The Coulomb coefficient of a brick's material or the table's [-].
+  double frictionOf(BodyHandle handle) const;
   /// What the model is told of a brick now.
   BodyMotion motionOf(const BrickRecord& brick) const;
 };

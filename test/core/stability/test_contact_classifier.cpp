@@ -29,7 +29,7 @@ BodyMotion body(BodyHandle handle) {
 std::vector<SupportPatch> patchesOf(BodyHandle handle, const std::vector<PairContact>& contacts,
                                     const SupportGraph& graph) {
   const ContactIndex index(&contacts);
-  return supportPatches(body(handle), index.of(handle), graph, StabilityOptions());
+  return supportPatches(body(handle), index.of(handle), frozenOrGround(graph), StabilityOptions());
 }
 
 TEST(ContactClassifier, TheLowerBodyOfAnUpwardContactSupports) {

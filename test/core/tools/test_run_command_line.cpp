@@ -159,7 +159,7 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
       {{"--scene", "x", "--iterations", "2.5"}, "--iterations"},
       {{"--scene", "x", "--iterations", "0"}, "solver_iterations"},
       {{"--scene", "x", "--mode", "magic"}, "magic"},
-      {{"--scene", "x", "--mode", "equilibrium"}, "not available"},
+      {{"--scene", "x", "--mode", "Com"}, "not available"},
       {{"--scene", "x", "--config"}, "--config needs a value"},
       {{"--scene", "x", "--duration", "-3"}, "--duration"},
       {{"--mode", "none"}, "--scene is required"},
