@@ -71,6 +71,8 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   self.services_.push_back(nh.advertiseService(kResetService, &SimNode::reset, &self));
   self.services_.push_back(nh.advertiseService(kGetBricksService, &SimNode::getBricks, &self));
   self.services_.push_back(nh.advertiseService(kPushBrickService, &SimNode::pushBrick, &self));
+  self.services_.push_back(
+      nh.advertiseService(kQueryPlacementService, &SimNode::queryPlacement, &self));
   self.services_.push_back(nh.advertiseService(kPauseService, &SimNode::pause, &self));
   self.services_.push_back(nh.advertiseService(kStepService, &SimNode::step, &self));
 
@@ -266,6 +268,26 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   response.message = "placed " + id + " at " + formatTime(simTime());
   state_dirty_ = true;
   publishEvents();
+  return true;
+}
+
+bool SimNode::queryPlacement(QueryPlacement::Request& request,
+                             QueryPlacement::Response& response) {
+  BrickPlacement placement;
+  placement.type = request.type;
+  if (Status converted = fromMsg(request.pose, "pose", &placement.pose); !converted)
+    return refuse(kQueryPlacementService, converted, &response);
+  PlacementReport report;
+  if (Status answered = simulation_->world().evaluatePlacement(placement, &report); !answered)
+    return refuse(kQueryPlacementService, answered, &response);
+  response.success = true;
+  response.message = report.reason;
+  response.stable = report.stable;
+  response.state = static_cast<std::uint8_t>(report.state);
+  response.margin = report.margin;
+  response.acceleration_margin = report.acceleration_margin;
+  response.supported_by = report.supported_by;
+  response.would_fall = report.would_fall;
   return true;
 }
 

@@ -57,8 +57,8 @@ class BadParameters(unittest.TestCase):
         self.check_refused(["_solver_iterations:=0"], "~solver_iterations")
 
     def test_unavailable_mode(self):
-        # equilibrium is the mode implemented last (DESIGN.md section 2).
-        self.check_refused(["_stability/mode:=equilibrium"], "~stability/mode", "not available")
+        # Mode names are exact: a capitalised one is not a mode of this build.
+        self.check_refused(["_stability/mode:=Equilibrium"], "~stability/mode", "not available")
 
     def test_unknown_mode(self):
         self.check_refused(["_stability/mode:=magic"], "~stability/mode", "magic")

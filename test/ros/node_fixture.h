@@ -16,6 +16,7 @@
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
+#include "brick_stack_sim/QueryPlacement.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
@@ -37,6 +38,7 @@ class NodeFixture : public ::testing::Test {
     push_ = nh_.serviceClient<PushBrick>("/brick_sim/push_brick");
     pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause");
     step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step");
+    query_ = nh_.serviceClient<QueryPlacement>("/brick_sim/query_placement");
   }
 
   /// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
@@ -88,7 +90,7 @@ class NodeFixture : public ::testing::Test {
   }
 
   ros::NodeHandle nh_;
-  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_;
+  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_, query_;
 };
 
 }  // namespace test

@@ -1,5 +1,6 @@
 // The node started by sim.launch, driven through its services: requests that
 // should work do, bad ones are refused with a message and change nothing.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -342,6 +343,51 @@ TEST_F(NodeServices, PushBrick) {
   ASSERT_TRUE(call(push_, push).success) << push.response.message;
   ASSERT_TRUE(step(300).success);
   EXPECT_GT(brick("p")->pose.position.x - x0, 0.005);
+}
+
+TEST_F(NodeServices, QueryPlacementAnswersByStaticsAndChangesNothing) {
+  ASSERT_TRUE(place("a", 0.0, 0.0, kHalfHeight).success);
+  ASSERT_TRUE(setPaused(true));
+  const std::vector<Brick> before = bricks();
+  auto query = [&](double x, double z) {
+    QueryPlacement srv;
+    srv.request.pose.position.x = x;
+    srv.request.pose.position.z = z;
+    srv.request.pose.orientation.w = 1.0;
+    return call(query_, srv);
+  };
+  // Centred on "a": it rests there. 30 mm along: still over it. 70 mm
+  // along: its COM past a's end (58.5 mm), it falls.
+  for (double x : {0.0, 0.03}) {
+    const QueryPlacement::Response on_top = query(x, 3 * kHalfHeight);
+    ASSERT_TRUE(on_top.success) << on_top.message;
+    EXPECT_TRUE(on_top.stable) << x << ": " << on_top.message;
+    EXPECT_EQ(on_top.state, Brick::STABLE);
+    EXPECT_EQ(on_top.supported_by, std::vector<std::string>{"a"});
+    // Brick.msg's margin: to the nearest edge of a's top, its long side
+    // (half a width, 11.7 mm) or its end (58.5 mm - x).
+    EXPECT_NEAR(on_top.margin, std::min(0.0117, 0.0585 - x), 1e-6);
+    // Flat, it slides before it tips: mu g.
+    EXPECT_NEAR(on_top.acceleration_margin, 0.5 * 9.81, 1e-6);
+  }
+  const QueryPlacement::Response beyond = query(0.07, 3 * kHalfHeight);
+  ASSERT_TRUE(beyond.success) << beyond.message;
+  EXPECT_FALSE(beyond.stable);
+  EXPECT_FALSE(beyond.message.empty());
+  // Bad poses: inside "a", under the table, a NaN.
+  expectRefused(query(0.0, kHalfHeight), "a pose inside a brick");
+  expectRefused(query(0.3, -0.02), "a pose under the table");
+  QueryPlacement nan;
+  nan.request.pose.position.x = kNaN;
+  nan.request.pose.orientation.w = 1.0;
+  expectRefused(call(query_, nan), "a NaN position");
+  // Nothing changed: the same bricks, where they were.
+  const std::vector<Brick> after = bricks();
+  ASSERT_EQ(after.size(), before.size());
+  EXPECT_EQ(after[0].id, before[0].id);
+  EXPECT_EQ(after[0].pose.position.x, before[0].pose.position.x);
+  EXPECT_EQ(after[0].pose.position.z, before[0].pose.position.z);
+  ASSERT_TRUE(setPaused(false));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
+#include "brick_stack_sim/QueryPlacement.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
@@ -34,6 +35,7 @@ constexpr char kRemoveBrickService[] = "remove_brick";
 constexpr char kResetService[] = "reset";
 constexpr char kGetBricksService[] = "get_bricks";
 constexpr char kPushBrickService[] = "push_brick";
+constexpr char kQueryPlacementService[] = "query_placement";
 constexpr char kPauseService[] = "pause";
 constexpr char kStepService[] = "step";
 
@@ -92,6 +94,7 @@ class SimNode {
   bool reset(ResetScene::Request& request, ResetScene::Response& response);
   bool getBricks(GetBricks::Request& request, GetBricks::Response& response);
   bool pushBrick(PushBrick::Request& request, PushBrick::Response& response);
+  bool queryPlacement(QueryPlacement::Request& request, QueryPlacement::Response& response);
   bool pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   bool step(StepSimulation::Request& request, StepSimulation::Response& response);
 

@@ -11,6 +11,7 @@
 #include "util/text_format.h"
 #include "world/numerical_guard.h"
 #include "world/placement_check.h"
+#include "world/placement_statics.h"
 #include "world/world_state.h"
 
 namespace brick_stack_sim {
@@ -307,9 +308,6 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
                                      PlacementReport* report) const {
   const WorldState& w = *state_;
   if (Status ok = checkPlacement(placement); !ok) return ok;
-  if (!w.model)
-    return Status::error("stability mode '" + w.options.stability.mode +
-                         "' has no model to judge a placement");
   const BrickType& type =
       *w.types.find(placement.type.empty() ? w.types.defaultType() : placement.type);
   const OrientedBox box{placement.pose, type.halfExtents()};
@@ -317,18 +315,28 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
   for (const Eigen::Vector3d& corner : corners(box)) bounds.extend(corner);
   // A handle no brick has yet: the one this brick would get.
   const BodyHandle handle = w.next_serial;
-  const PlacementEvaluation evaluation =
-      w.model->evaluatePlacement(BodyMotion{handle, placement.pose.translation(), type.mass,
-                                            Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-                                 restingContacts(w, handle, type.friction, box, bounds.min(), bounds.max()));
+  const BodyMotion brick{handle, placement.pose.translation(), type.mass, Eigen::Vector3d::Zero(),
+                         Eigen::Vector3d::Zero()};
   PlacementReport result;
-  result.stable = evaluation.stable;
-  result.state = evaluation.kind;
-  result.margin = evaluation.margin;
-  for (BodyHandle supporter : evaluation.supporters)
-    result.supported_by.push_back(w.nameOf(supporter));
-  for (BodyHandle brick : evaluation.would_fall) result.would_fall.push_back(w.nameOf(brick));
-  result.reason = evaluation.reason;
+  const StaticsVerdict statics = judgeAlone(
+      brick, touchingBricks(w, handle, type.friction, box, bounds.min(), bounds.max()), w);
+  result.stable = statics.stands;
+  result.state = statics.stands ? statics.kind : BrickState::kDynamic;
+  result.margin = statics.margin;
+  result.acceleration_margin = statics.acceleration_margin;
+  for (BodyHandle supporter : statics.touching) result.supported_by.push_back(w.nameOf(supporter));
+  result.reason = statics.reason;
+  if (statics.stands && w.model) {
+    // Its load on the frozen stack below, as the running model sees it.
+    const PlacementEvaluation evaluation = w.model->evaluatePlacement(
+        brick, restingContacts(w, handle, type.friction, box, bounds.min(), bounds.max()));
+    for (BodyHandle fallen : evaluation.would_fall) result.would_fall.push_back(w.nameOf(fallen));
+    if (!result.would_fall.empty()) {
+      result.stable = false;
+      result.state = BrickState::kDynamic;
+      result.reason = evaluation.reason;
+    }
+  }
   *report = std::move(result);
   return Status::success();
 }

@@ -81,43 +81,46 @@ Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   return Status::success();
 }
 
+void appendContacts(const WorldState& w, BodyHandle brick, double friction, const OrientedBox& box,
+                    BodyHandle other, bool any_face, std::vector<PairContact>* contacts) {
+  const double touching = w.options.stability.contact_distance;
+  const OrientedBox other_box = w.boxOf(other);
+  // Touching, not sunk in: an overlap the placement check let through is
+  // Bullet's to resolve before the brick can rest.
+  if (std::abs(separation(other_box, box)) > touching) return;
+  PairContact contact;
+  contact.a = brick;
+  contact.b = other;
+  // Bullet's combination (bullet_scene.cpp): the geometric mean.
+  contact.friction = std::sqrt(w.frictionOf(other) * friction);
+  if (flushContactPatch(other_box, box, w.options.stability.flush_angle, touching,
+                        &contact.points)) {
+    contacts->push_back(std::move(contact));
+    return;
+  }
+  if (!any_face) return;
+  for (BoxContactFace& face : touchingContacts(box, other_box, touching)) {
+    PairContact across = contact;
+    across.normal = face.normal;
+    across.points = std::move(face.points);
+    contacts->push_back(std::move(across));
+  }
+}
+
 std::vector<PairContact> restingContacts(const WorldState& w, BodyHandle brick, double friction,
                                          const OrientedBox& box, const Eigen::Vector3d& low,
                                          const Eigen::Vector3d& high) {
-  const double touching = w.options.stability.contact_distance;
   const bool leaning = w.model && w.model->judgesLeaning();
   std::vector<PairContact> contacts;
-  auto try_contact = [&](BodyHandle other) {
-    const OrientedBox other_box = w.boxOf(other);
-    const double gap = separation(other_box, box);
-    // Touching, not sunk in: an overlap the placement check let through is
-    // Bullet's to resolve before the brick can rest.
-    if (std::abs(gap) > touching) return;
-    PairContact contact;
-    contact.a = brick;
-    contact.b = other;
-    // Bullet's combination (bullet_scene.cpp): the geometric mean.
-    contact.friction = std::sqrt(w.frictionOf(other) * friction);
-    if (flushContactPatch(other_box, box, w.options.stability.flush_angle, touching,
-                          &contact.points)) {
-      contacts.push_back(std::move(contact));
-      return;
-    }
-    if (!leaning) return;
-    for (BoxContactFace& face : touchingContacts(box, other_box, touching)) {
-      PairContact across = contact;
-      across.normal = face.normal;
-      across.points = std::move(face.points);
-      contacts.push_back(std::move(across));
-    }
-  };
-  try_contact(kTableHandle);
-  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(touching);
-  for (BodyHandle frozen : w.dormant.near(low - reach, high + reach)) try_contact(frozen);
+  appendContacts(w, brick, friction, box, kTableHandle, leaning, &contacts);
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(w.options.stability.contact_distance);
+  for (BodyHandle frozen : w.dormant.near(low - reach, high + reach))
+    appendContacts(w, brick, friction, box, frozen, leaning, &contacts);
   if (leaning) {
     for (BodyHandle placed : w.placed_at_rest) {
       const BrickRecord* record = w.bricks.find(placed);
-      if (placed != brick && record && record->mode == BrickMode::kDynamic) try_contact(placed);
+      if (placed != brick && record && record->mode == BrickMode::kDynamic)
+        appendContacts(w, brick, friction, box, placed, true, &contacts);
     }
   }
   return contacts;

@@ -17,6 +17,15 @@ struct WorldState;
 /// message names what is wrong and its value.
 Status checkPlacement(const WorldState& world, const BrickPlacement& placement);
 
+/// The contacts of a brick at `box` (handle `brick`, of a material with
+/// `friction`) with `other`, found from geometry and appended to `contacts`:
+/// the flush patch where it rests flat on `other`, or, when `any_face`, the
+/// contact across every touching face (touchingContacts). Nothing when they
+/// do not touch within the stability's contact distance.
+void appendContacts(const WorldState& world, BodyHandle brick, double friction,
+                    const OrientedBox& box, BodyHandle other, bool any_face,
+                    std::vector<PairContact>* contacts);
+
 /// The contacts of a brick resting at `box` (handle `brick`, of a material
 /// with `friction`, whose bounds are `low`..`high` [m]) with the table and
 /// the frozen bricks, found from geometry: a brick placed at rest is judged

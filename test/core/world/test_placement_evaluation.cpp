@@ -65,7 +65,7 @@ TEST_F(PlacementEvaluation, ALoadThatMovesTheCommonCentrePastTheEdgeTipsTheLower
   EXPECT_EQ(low.state, BrickState::kDynamic);
 }
 
-TEST_F(PlacementEvaluation, BadPlacementsAndPlainBulletAreRefused) {
+TEST_F(PlacementEvaluation, BadPlacementsAreRefused) {
   PlacementReport report;
   EXPECT_FALSE(world_->evaluatePlacement(placement("low", {0, 0.2, 0.0039}), &report).ok);
   BrickPlacement inside = onTop(kLowerX);
@@ -73,11 +73,52 @@ TEST_F(PlacementEvaluation, BadPlacementsAndPlainBulletAreRefused) {
   const Status overlap = world_->evaluatePlacement(inside, &report);
   EXPECT_FALSE(overlap.ok);
   EXPECT_NE(overlap.message.find("overlaps"), std::string::npos) << overlap.message;
-  auto plain = test::makeWorld(test::plainBulletOptions());
-  const Status none = plain->evaluatePlacement(placement("a", {0, 0, 0.0039}), &report);
-  EXPECT_FALSE(none.ok);
-  EXPECT_NE(none.message.find("none"), std::string::npos) << none.message;
+  const Status under = world_->evaluatePlacement(placement("u", {0, 0, -0.01}), &report);
+  EXPECT_FALSE(under.ok);
+  EXPECT_NE(under.message.find("below the table"), std::string::npos) << under.message;
   EXPECT_TRUE(test::fingerprint(*world_) == before_);
+}
+
+TEST(PlacementStatics, PlainBulletIsAnsweredByStaticsToo) {
+  auto plain = test::makeWorld(test::plainBulletOptions());
+  const std::string before = test::fingerprint(*plain);
+  PlacementReport report;
+  ASSERT_TRUE(plain->evaluatePlacement(placement("a", {0, 0, kKaplaThickness / 2}), &report).ok);
+  EXPECT_TRUE(report.stable) << report.reason;
+  EXPECT_EQ(report.state, BrickState::kStable);
+  EXPECT_EQ(report.supported_by, std::vector<std::string>{"table"});
+  // Flat on the table it slides before it tips (half-thickness over
+  // half-width is 1/3, over half-length 1/15): mu g, mu = 0.5 brick and table.
+  EXPECT_NEAR(report.acceleration_margin, 0.5 * 9.81, 1e-6);
+  // Half a millimetre above the table it touches nothing.
+  ASSERT_TRUE(
+      plain->evaluatePlacement(placement("a", {0, 0, kKaplaThickness / 2 + 5e-4}), &report).ok);
+  EXPECT_FALSE(report.stable);
+  EXPECT_TRUE(report.supported_by.empty());
+  EXPECT_TRUE(test::fingerprint(*plain) == before) << "a query changed the world";
+}
+
+TEST(PlacementStatics, ALeaningPlankIsJudgedByFriction) {
+  // Standing on its end, its COM L/2 above an edge T/2 away, a plank tips
+  // at a sideways acceleration of g (T/2) / (L/2) = g T / L, before it
+  // slides (mu g). Tilted by 0.3 rad with nothing to lean on, it falls.
+  auto world = test::makeWorld(test::optionsFor("equilibrium"));
+  PlacementReport report;
+  BrickPlacement on_end = placement("a", {0, 0, test::kKaplaLength / 2});
+  on_end.pose.linear() =
+      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  ASSERT_TRUE(world->evaluatePlacement(on_end, &report).ok);
+  EXPECT_TRUE(report.stable) << report.reason;
+  EXPECT_NEAR(report.acceleration_margin, 9.81 * kKaplaThickness / test::kKaplaLength, 1e-6);
+  BrickPlacement leaning = on_end;
+  leaning.pose.linear() =
+      Eigen::AngleAxisd(0.3 - M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  leaning.pose.translation() = Eigen::Vector3d(
+      0.0, 0.0,
+      0.5 * (kKaplaThickness * std::sin(0.3) + test::kKaplaLength * std::cos(0.3)));
+  ASSERT_TRUE(world->evaluatePlacement(leaning, &report).ok);
+  EXPECT_FALSE(report.stable) << report.reason;
+  EXPECT_EQ(report.supported_by, std::vector<std::string>{"table"});
 }
 
 }  // namespace

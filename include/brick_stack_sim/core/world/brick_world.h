@@ -31,9 +31,18 @@ struct CostCounters {
 
 /// The answer to "would a brick at rest here be stable?" (evaluatePlacement).
 struct PlacementReport {
-  bool stable = false;  ///< It would join the stack at once, and nothing under it would fall.
+  /// Statics holds it where it is (contact forces within friction balance
+  /// it on what it touches), and the stability model, if any, finds that
+  /// nothing under it would fall.
+  bool stable = false;
   BrickState state = BrickState::kDynamic;  ///< kStable or kLeaning when stable.
-  double margin = 0.0;                      ///< Of the brick itself, as Brick.msg's margin [m].
+  /// Of the brick itself, as Brick.msg's margin [m]: its COM against the
+  /// hull of what carries it from below (0 when nothing does).
+  double margin = 0.0;
+  /// The least horizontal acceleration, along +-x and +-y, that would move
+  /// it on what it touches (statics; 0 when it does not stand) [m/s^2].
+  /// Over g it is the tangent of the tilt it survives.
+  double acceleration_margin = 0.0;
   std::vector<std::string> supported_by;    ///< Brick ids, "table" or "floor".
   std::vector<std::string> would_fall;      ///< Frozen bricks its load would tip.
   std::string reason;
@@ -70,9 +79,11 @@ class BrickWorld {
   /// what it carries.
   Status applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
                       const Eigen::Vector3d& point);
-  /// Would a brick placed at rest here join the stack, and would the stack
-  /// bear it? Refused like addBrick() when the placement is invalid, and when
-  /// the world has no stability model (mode none). Nothing changes.
+  /// Would a brick placed at rest here stand, and would the stack bear it?
+  /// Answered by rigid-block statics in every mode (what it touches held
+  /// fixed), and by the stability model, when there is one, for the load on
+  /// the stack below. Refused like addBrick() when the placement is invalid.
+  /// Nothing changes.
   Status evaluatePlacement(const BrickPlacement& placement, PlacementReport* report) const;
 
   /// Advances the world by one fixed time step.

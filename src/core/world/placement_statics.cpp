@@ -1,0 +1,91 @@
+#include "world/placement_statics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "stability/contact_classifier.h"
+#include "stability/rigid_block_statics.h"
+#include "stability/support_evaluation.h"
+#include "util/text_format.h"
+#include "world/placement_check.h"
+#include "world/world_state.h"
+
+namespace brick_stack_sim {
+
+std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, double friction,
+                                        const OrientedBox& box, const Eigen::Vector3d& low,
+                                        const Eigen::Vector3d& high) {
+  std::vector<PairContact> contacts;
+  appendContacts(w, brick, friction, box, kTableHandle, true, &contacts);
+  const Eigen::AlignedBox3d reach(
+      low.array() - w.options.stability.contact_distance,
+      high.array() + w.options.stability.contact_distance);
+  std::vector<BodyHandle> near = w.dormant.near(reach.min(), reach.max());
+  for (const BrickRecord* mover : w.sets.movers()) near.push_back(mover->handle);
+  for (const BrickRecord* held : w.sets.held()) near.push_back(held->handle);
+  std::sort(near.begin(), near.end());
+  for (BodyHandle other : near)
+    if (other != brick) appendContacts(w, brick, friction, box, other, true, &contacts);
+  return contacts;
+}
+
+StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact>& contacts,
+                          const WorldState& w) {
+  StaticsVerdict verdict;
+  const std::vector<StaticsBody> bodies{StaticsBody{brick.mass, brick.com, false}};
+  std::vector<StaticsContact> statics;
+  std::vector<const PairContact*> pointers;
+  for (const PairContact& contact : contacts) {
+    pointers.push_back(&contact);
+    verdict.touching.push_back(contact.b);
+    for (const Eigen::Vector3d& point : contact.points)
+      statics.push_back(StaticsContact{0, kStaticsGround, point, contact.normal, contact.friction});
+  }
+  std::sort(verdict.touching.begin(), verdict.touching.end());
+  verdict.touching.erase(std::unique(verdict.touching.begin(), verdict.touching.end()),
+                         verdict.touching.end());
+  // The COM margin of Brick.msg, on what carries it from below.
+  BrickStability support;
+  support.supports =
+      supportPatches(brick, pointers, [](BodyHandle) { return true; }, w.options.stability);
+  evaluateSupport(brick.com, &support);
+  verdict.margin = support.margin;
+
+  std::string names;
+  for (BodyHandle other : verdict.touching) names += (names.empty() ? "" : ", ") + w.nameOf(other);
+  if (statics.empty()) {
+    verdict.reason = "it would touch nothing: it would fall";
+    return verdict;
+  }
+  StaticsOptions options;
+  options.gravity = w.options.gravity;
+  const StaticsSolution solution = solveStatics(bodies, statics, options);
+  if (!solution.solved) {
+    verdict.reason = "statics could not be solved: " + solution.message;
+    return verdict;
+  }
+  if (!solution.feasible) {
+    verdict.reason = "no contact forces within friction hold it on " + names;
+    return verdict;
+  }
+  verdict.stands = true;
+  verdict.kind = !support.supports.empty() && support.margin > w.options.stability.min_margin
+                     ? BrickState::kStable
+                     : BrickState::kLeaning;
+  verdict.acceleration_margin = std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d directions[] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
+                                        Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)};
+  for (const Eigen::Vector3d& direction : directions) {
+    verdict.acceleration_margin = std::min(
+        verdict.acceleration_margin, horizontalAccelerationMargin(bodies, statics, direction, options));
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g m/s^2", verdict.acceleration_margin);
+  verdict.reason = std::string(verdict.kind == BrickState::kStable ? "rests on " : "leans on ") +
+                   names + " (statics; a sideways acceleration of " + text + " would move it)";
+  return verdict;
+}
+
+}  // namespace brick_stack_sim
