@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "stability/support_evaluation.h"
 #include "stability/support_graph.h"
 #include "util/text_format.h"
 
@@ -40,15 +41,6 @@ class StaticsAssembly {
   std::vector<StaticsBody> bodies_;
   std::vector<StaticsContact> contacts_;
 };
-
-std::vector<BodyHandle> supportersOf(const BrickStability& stability) {
-  std::vector<BodyHandle> handles;
-  for (const SupportPatch& patch : stability.supports) handles.push_back(patch.supporter);
-  for (const SupportPatch& patch : stability.side_contacts) handles.push_back(patch.supporter);
-  std::sort(handles.begin(), handles.end());
-  handles.erase(std::unique(handles.begin(), handles.end()), handles.end());
-  return handles;
-}
 
 std::string percent(double fraction) {
   char text[32];

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "stability/contact_classifier.h"
+#include "stability/support_evaluation.h"
 #include "util/text_format.h"
 
 namespace brick_stack_sim {
@@ -182,12 +183,7 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
   FreezeDecision decision;
   const bool admitted = evaluateMover(brick, index.of(brick.handle), &stability, &decision);
   result.margin = stability.margin;
-  for (const SupportPatch& patch : stability.supports) result.supporters.push_back(patch.supporter);
-  for (const SupportPatch& patch : stability.side_contacts)
-    result.supporters.push_back(patch.supporter);
-  std::sort(result.supporters.begin(), result.supporters.end());
-  result.supporters.erase(std::unique(result.supporters.begin(), result.supporters.end()),
-                          result.supporters.end());
+  result.supporters = supportersOf(stability);
   if (!admitted) {
     result.reason = stability.supports.empty()
                         ? "it would rest on nothing that is frozen or the ground"

@@ -29,4 +29,13 @@ void evaluateSupport(const Eigen::Vector3d& load_point, BrickStability* s) {
   s->margin = s->supports.empty() ? 0.0 : signedDistance(s->combined_hull, load_point.head<2>());
 }
 
+std::vector<BodyHandle> supportersOf(const BrickStability& stability) {
+  std::vector<BodyHandle> handles;
+  for (const SupportPatch& patch : stability.supports) handles.push_back(patch.supporter);
+  for (const SupportPatch& patch : stability.side_contacts) handles.push_back(patch.supporter);
+  std::sort(handles.begin(), handles.end());
+  handles.erase(std::unique(handles.begin(), handles.end()), handles.end());
+  return handles;
+}
+
 }  // namespace brick_stack_sim

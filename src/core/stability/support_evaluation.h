@@ -12,4 +12,7 @@ namespace brick_stack_sim {
 /// supports the brick (there is no hull to measure against).
 void evaluateSupport(const Eigen::Vector3d& load_point, BrickStability* stability);
 
+/// Everything `stability` touches, from below or beside, once each, in handle order.
+std::vector<BodyHandle> supportersOf(const BrickStability& stability);
+
 }  // namespace brick_stack_sim
