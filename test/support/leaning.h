@@ -18,6 +18,14 @@ inline Eigen::Vector3d kaplaHalfExtents() {
   return 0.5 * Eigen::Vector3d(kKaplaLength, kKaplaWidth, kKaplaThickness);
 }
 
+/// A table as a box whose top face is z = 0, wider than any test scene.
+inline OrientedBox tableBox() {
+  OrientedBox table;
+  table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.01);
+  table.half_extents = Eigen::Vector3d(1.0, 1.0, 0.01);
+  return table;
+}
+
 /// A KAPLA's orientation when its length leans by `theta` [rad] from
 /// vertical towards +x (negative: towards -x).
 inline Eigen::Matrix3d leaningRotation(double theta) {

@@ -8,17 +8,10 @@ namespace {
 
 OrientedBox kapla(const Eigen::Isometry3d& pose) { return OrientedBox{pose, test::kaplaHalfExtents()}; }
 
-OrientedBox table() {
-  OrientedBox box;
-  box.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.01);
-  box.half_extents = Eigen::Vector3d(1.0, 1.0, 0.01);
-  return box;
-}
-
 TEST(BoxContact, FlatBrickOnTheTableTouchesWithItsWholeFace) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation().z() = 0.5 * test::kKaplaThickness;
-  const std::vector<BoxContactFace> faces = touchingContacts(kapla(pose), table(), 1e-7);
+  const std::vector<BoxContactFace> faces = touchingContacts(kapla(pose), test::tableBox(), 1e-7);
   ASSERT_EQ(faces.size(), 1u);
   EXPECT_TRUE(faces[0].normal.isApprox(Eigen::Vector3d::UnitZ()));
   ASSERT_EQ(faces[0].points.size(), 4u);
@@ -30,7 +23,7 @@ TEST(BoxContact, FlatBrickOnTheTableTouchesWithItsWholeFace) {
 
 TEST(BoxContact, LeaningPlankTouchesTheTableAlongOneEdge) {
   const Eigen::Isometry3d pose = test::plankLeaningTowardsX(0.4, 0.0);
-  const std::vector<BoxContactFace> faces = touchingContacts(kapla(pose), table(), 1e-7);
+  const std::vector<BoxContactFace> faces = touchingContacts(kapla(pose), test::tableBox(), 1e-7);
   ASSERT_EQ(faces.size(), 1u);
   ASSERT_EQ(faces[0].points.size(), 2u);
   // The lower inner edge, under the plank's upper inner edge (x = 0) by L sin.
@@ -62,9 +55,9 @@ TEST(BoxContact, PlanksOfAVMeetAtTheApexAcrossBothFaces) {
 TEST(BoxContact, BoxesApartOrSunkInDoNotTouch) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation().z() = 0.5 * test::kKaplaThickness + 1e-4;
-  EXPECT_TRUE(touchingContacts(kapla(pose), table(), 1e-7).empty());
+  EXPECT_TRUE(touchingContacts(kapla(pose), test::tableBox(), 1e-7).empty());
   pose.translation().z() = 0.5 * test::kKaplaThickness - 1e-4;
-  EXPECT_TRUE(touchingContacts(kapla(pose), table(), 1e-7).empty());
+  EXPECT_TRUE(touchingContacts(kapla(pose), test::tableBox(), 1e-7).empty());
 }
 
 }  // namespace

@@ -33,9 +33,7 @@ class StaticsScene {
   void setFriction(int i, int j, double friction) { pair_friction_.push_back({i, j, friction}); }
 
   std::vector<StaticsContact> contacts() const {
-    OrientedBox table;
-    table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.01);
-    table.half_extents = Eigen::Vector3d(1.0, 1.0, 0.01);
+    const OrientedBox table = test::tableBox();
     std::vector<StaticsContact> result;
     auto add_pair = [&](int a, int b, const OrientedBox& box_b) {
       for (const BoxContactFace& face : touchingContacts(boxes_[a], box_b, 1e-7))
