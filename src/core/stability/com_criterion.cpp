@@ -1,10 +1,54 @@
 #include "stability/com_criterion.h"
 
+#include <algorithm>
+
+#include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
-#include "stability/support_graph.h"
 #include "util/text_format.h"
 
 namespace brick_stack_sim {
+
+namespace {
+
+/// The unit every load passed between bricks is measured in [m/s^2]
+/// (LoadShare holds masses, PointForce newtons; statics, the same g).
+const double kGravity = StaticsOptions().gravity;
+
+/// The resultant of a brick's vertical load (`mass` acting through
+/// `centre`) and `pushes`, where its line of action crosses the plane
+/// z = `height`.
+struct Resultant {
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();     ///< [m]
+  double mass = 0.0;                                   ///< Its vertical part, as a mass [kg].
+  Eigen::Vector2d sideways = Eigen::Vector2d::Zero();  ///< [N]
+};
+
+/// False when the resultant does not press the brick down on its supports.
+bool resultantOnPlane(double mass, const Eigen::Vector2d& centre,
+                      const std::vector<PointForce>& pushes, double height, Resultant* out) {
+  Eigen::Vector3d force(0.0, 0.0, -mass * kGravity);
+  Eigen::Vector3d moment = Eigen::Vector3d(centre.x(), centre.y(), 0.0).cross(force);
+  for (const PointForce& push : pushes) {
+    force += push.force;
+    moment += push.point.cross(push.force);
+  }
+  if (!(force.z() < 0.0)) return false;
+  // The point q on the plane with q x force = moment (the torque along the
+  // force, a twist about the vertical, is not a tipping question).
+  out->point =
+      Eigen::Vector2d(height * force.x() - moment.y(), moment.x() + height * force.y()) / force.z();
+  out->mass = -force.z() / kGravity;
+  out->sideways = force.head<2>();
+  return true;
+}
+
+double leastFriction(const std::vector<SupportPatch>& patches) {
+  double friction = patches.empty() ? 0.0 : patches.front().friction;
+  for (const SupportPatch& patch : patches) friction = std::min(friction, patch.friction);
+  return friction;
+}
+
+}  // namespace
 
 ComCriterion::ComCriterion(const StabilityOptions& options, BodyNamer name_of)
     : options_(options), name_of_(std::move(name_of)) {}
@@ -13,16 +57,69 @@ void ComCriterion::evaluate(const BodyMotion& brick, BrickStability* stability) 
   evaluateSupport(brick.com, stability);
 }
 
+bool ComCriterion::leans(const BrickStability& stability) const {
+  return std::any_of(stability.side_contacts.begin(), stability.side_contacts.end(),
+                     [&](const SupportPatch& patch) { return leansOn(patch, options_); });
+}
+
+bool ComCriterion::stands(const std::vector<BodyMotion>& bricks,
+                          const std::vector<const BrickStability*>& stability) const {
+  StaticsAssembly assembly(options_);
+  for (const BodyMotion& brick : bricks) assembly.addFree(brick.handle, brick.mass, brick.com);
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    assembly.addPatches(static_cast<int>(i), stability[i]->supports);
+    assembly.addPatches(static_cast<int>(i), stability[i]->side_contacts);
+  }
+  const StaticsSolution solution = assembly.solve();
+  return solution.solved && solution.feasible;
+}
+
+FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
+                                               const BrickStability& stability) const {
+  FreezeDecision decision;
+  decision.brick = brick.handle;
+  decision.kind = leans(stability) ? BrickState::kLeaning : BrickState::kStable;
+  decision.margin = stability.margin;
+  decision.supporters = supportersOf(stability);
+  std::string names;
+  for (BodyHandle supporter : decision.supporters)
+    names += (names.empty() ? "" : ", ") + name_of_(supporter);
+  decision.reason = std::string(decision.kind == BrickState::kLeaning ? "leans on " : "rests on ") +
+                    names + ": contact forces within friction balance it (statics)";
+  return decision;
+}
+
 bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stability,
                           FreezeDecision* decision) const {
-  if (stability.supports.empty() || stability.margin <= options_.min_margin) return false;
-  *decision = FreezeDecision{brick.handle, BrickState::kStable, stability.margin, {}, ""};
-  std::string on;
-  for (const SupportPatch& patch : stability.supports) {
-    decision->supporters.push_back(patch.supporter);
-    on += (on.empty() ? "" : ", ") + name_of_(patch.supporter);
+  if (!stability.supports.empty() && stability.margin > options_.min_margin) {
+    *decision = FreezeDecision{brick.handle, BrickState::kStable, stability.margin, {}, ""};
+    std::string on;
+    for (const SupportPatch& patch : stability.supports) {
+      decision->supporters.push_back(patch.supporter);
+      on += (on.empty() ? "" : ", ") + name_of_(patch.supporter);
+    }
+    decision->reason = "rests stably on " + on + " (margin " + millimetres(stability.margin) + ")";
+    return true;
   }
-  decision->reason = "rests stably on " + on + " (margin " + millimetres(stability.margin) + ")";
+  // Without anything to lean on, the LP of one brick on fixed supporters
+  // says no more than the COM rule.
+  if (!leans(stability) || !stands({brick}, {&stability})) return false;
+  *decision = admittedByStatics(brick, stability);
+  return true;
+}
+
+bool ComCriterion::admitsGroup(const std::vector<BodyMotion>& group,
+                               const std::vector<BrickStability>& stability,
+                               std::vector<FreezeDecision>* decisions) const {
+  std::vector<const BrickStability*> members;
+  for (const BrickStability& s : stability) members.push_back(&s);
+  if (!stands(group, members)) return false;
+  decisions->clear();
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    decisions->push_back(admittedByStatics(group[i], stability[i]));
+    decisions->back().reason +=
+        ", with " + std::to_string(group.size() - 1) + " brick(s) placed with it";
+  }
   return true;
 }
 
@@ -31,54 +128,152 @@ WakeDecision ComCriterion::outsideSupport(BodyHandle brick, double margin) const
                       "COM-above left its support: margin " + millimetres(margin)};
 }
 
-std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
-                                              const std::vector<BodyHandle>& component) const {
-  std::vector<BodyHandle> load_order, cyclic;
-  graph->loadOrder(component, &load_order, &cyclic);
-  std::vector<WakeDecision> unstable;
-  // Each brick's loads arrive from the bricks it carries, all before its own
-  // turn in the load order, and are summed in the order they arrive.
-  for (BodyHandle handle : load_order) graph->find(handle)->received.clear();
-  std::vector<LoadShare> shares;
-  for (BodyHandle handle : load_order) {
-    SupportGraph::Node& node = *graph->find(handle);
-    // COM-above: the resultant of its own weight and the loads it receives,
-    // each where it acts. Heights only place the marker ray: mass-weighted.
-    double mass = node.mass;
-    Eigen::Vector3d moment = node.mass * node.com;
-    for (const LoadShare& load : node.received) {
-      mass += load.mass;
-      moment.head<2>() += load.mass * load.point;
+bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
+                                std::vector<LoadShare>* shares,
+                                std::vector<WakeDecision>* unstable) const {
+  SupportGraph::Node& node = *graph->find(handle);
+  // COM-above: the resultant of its own weight and the loads it receives,
+  // each where it acts. Heights only place the marker ray: mass-weighted.
+  double mass = node.mass;
+  Eigen::Vector3d moment = node.mass * node.com;
+  for (const LoadShare& load : node.received) {
+    mass += load.mass;
+    moment.head<2>() += load.mass * load.point;
+  }
+  Eigen::Vector3d com_above = moment / mass;
+  com_above.z() = node.com.z();
+  node.stability.frozen = true;
+  node.stability.mass_above = mass;
+  node.stability.supports = node.supports;
+  evaluateSupport(com_above, &node.stability);
+  Resultant resultant;
+  resultant.mass = mass;
+  if (!node.pushes.empty()) {
+    // Leaning bricks push it: the resultant crosses its support plane
+    // where it would tip about, and its sideways part must stay in friction.
+    if (!resultantOnPlane(mass, com_above.head<2>(), node.pushes, node.stability.support_height,
+                          &resultant)) {
+      unstable->push_back(WakeDecision{handle, WakeCause::kOutsideSupport, handle, 0.0,
+                                       "the bricks leaning on it lift it"});
+      return false;
     }
-    Eigen::Vector3d com_above = moment / mass;
-    com_above.z() = node.com.z();
+    com_above.head<2>() = resultant.point;
+    node.stability.mass_above = mass = resultant.mass;
+    evaluateSupport(com_above, &node.stability);
+    const double holds = leastFriction(node.supports) * mass * kGravity;
+    if (resultant.sideways.norm() > holds) {
+      unstable->push_back(WakeDecision{
+          handle, WakeCause::kOutsideSupport, handle, node.stability.margin,
+          "the bricks leaning on it push it sideways with " + newtons(resultant.sideways.norm()) +
+              ", more than friction holds (" + newtons(holds) + ")"});
+      return false;
+    }
+  }
+  node.supports = node.stability.supports;  // keep the hulls
+  if (node.stability.margin <= options_.min_margin) {
+    unstable->push_back(outsideSupport(handle, node.stability.margin));
+    return false;
+  }
+  std::vector<Polygon2d> patches;
+  for (const SupportPatch& patch : node.supports) patches.push_back(patch.hull);
+  if (distributeLoad(mass, com_above.head<2>(), patches, shares) == LoadSplitRule::kUnsupported) {
+    unstable->push_back(outsideSupport(handle, node.stability.margin));
+    return false;
+  }
+  for (std::size_t i = 0; i < node.supports.size(); ++i) {
+    SupportGraph::Node* below = graph->find(node.supports[i].supporter);
+    if (!below) continue;  // the table carries anything
+    const LoadShare& share = (*shares)[i];
+    below->received.push_back(share);
+    // Friction at the interface carries the sideways part, in proportion.
+    if (!resultant.sideways.isZero())
+      below->pushes.push_back(
+          PointForce{Eigen::Vector3d(resultant.sideways.x(), resultant.sideways.y(), 0.0) *
+                         (share.mass / mass),
+                     Eigen::Vector3d(share.point.x(), share.point.y(), node.supports[i].height)});
+  }
+  return true;
+}
+
+void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHandle>& group,
+                                  std::vector<WakeDecision>* unstable) const {
+  StaticsAssembly assembly(options_);
+  for (BodyHandle handle : group) {
+    SupportGraph::Node& node = *graph->find(handle);
+    const int body = assembly.addFree(handle, node.mass, node.com);
+    double mass = node.mass;
+    for (const LoadShare& load : node.received) {
+      assembly.addLoad(body, PointForce{Eigen::Vector3d(0.0, 0.0, -load.mass * kGravity),
+                                        Eigen::Vector3d(load.point.x(), load.point.y(), 0.0)});
+      mass += load.mass;
+    }
+    for (const PointForce& push : node.pushes) assembly.addLoad(body, push);
     node.stability.frozen = true;
     node.stability.mass_above = mass;
     node.stability.supports = node.supports;
-    evaluateSupport(com_above, &node.stability);
-    node.supports = node.stability.supports;  // keep the hulls
-    if (node.stability.margin <= options_.min_margin) {
-      unstable.push_back(outsideSupport(handle, node.stability.margin));
-      continue;
-    }
-    std::vector<Polygon2d> patches;
-    for (const SupportPatch& patch : node.supports) patches.push_back(patch.hull);
-    if (distributeLoad(mass, com_above.head<2>(), patches, &shares) ==
-        LoadSplitRule::kUnsupported) {
-      unstable.push_back(outsideSupport(handle, node.stability.margin));
-      continue;
-    }
-    for (std::size_t i = 0; i < node.supports.size(); ++i) {
-      const BodyHandle supporter = node.supports[i].supporter;
-      SupportGraph::Node* below = graph->find(supporter);
-      if (!below) continue;  // the table carries anything
-      below->received.push_back(shares[i]);
+    evaluateSupport(node.com, &node.stability);
+    node.supports = node.stability.supports;
+  }
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    const SupportGraph::Node& node = *graph->find(group[i]);
+    assembly.addPatches(static_cast<int>(i), node.supports);
+    assembly.addPatches(static_cast<int>(i), node.side_contacts);
+  }
+  const StaticsSolution solution = assembly.solve();
+  if (!solution.solved) {
+    // Never keep a leaning brick frozen on no answer: Bullet will tell.
+    for (BodyHandle handle : group)
+      unstable->push_back(WakeDecision{handle, WakeCause::kOutsideSupport, handle, 0.0,
+                                       "statics could not be solved: " + solution.message});
+    return;
+  }
+  bool balanced = true;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    if (solution.imbalance[i] <= 0.0) continue;
+    balanced = false;
+    unstable->push_back(WakeDecision{
+        group[i], WakeCause::kOutsideSupport, group[i], graph->find(group[i])->stability.margin,
+        "no contact forces within friction balance it (statics: " + percent(solution.imbalance[i]) +
+            " of a brick's weight unbalanced)"});
+  }
+  if (!balanced) return;
+  for (std::size_t c = 0; c < assembly.contacts().size(); ++c) {
+    const BodyHandle other = assembly.otherOf(c);
+    if (assembly.isFree(other)) continue;
+    if (SupportGraph::Node* pushed = graph->find(other))
+      pushed->pushes.push_back(PointForce{-solution.forces[c], assembly.contacts()[c].point});
+  }
+}
+
+std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
+                                              const std::vector<BodyHandle>& component) const {
+  for (BodyHandle handle : component) {
+    SupportGraph::Node& node = *graph->find(handle);
+    node.received.clear();
+    node.pushes.clear();
+  }
+  const SupportGraph::LeaningTest leans_on = [this](const SupportPatch& patch) {
+    return leansOn(patch, options_);
+  };
+  std::vector<WakeDecision> unstable;
+  std::vector<LoadShare> shares;
+  // Each group's loads arrive from the groups above it, all before its own
+  // turn, and are summed in the order they arrive.
+  for (const std::vector<BodyHandle>& group : graph->loadOrder(component, leans_on)) {
+    const bool leaning = std::any_of(group.begin(), group.end(), [&](BodyHandle handle) {
+      return graph->find(handle)->leaning;
+    });
+    if (leaning) {
+      balanceLeaning(graph, group, &unstable);
+    } else if (group.size() > 1) {
+      // Bricks resting on each other in a ring: nothing can be said to carry them.
+      for (BodyHandle handle : group)
+        unstable.push_back(WakeDecision{handle, WakeCause::kSupportCycle, handle, 0.0,
+                                        "its supports form a cycle"});
+    } else {
+      passLoadDown(graph, group.front(), &shares, &unstable);
     }
   }
-  // No order in which loads flow down: nothing can be said to carry them.
-  for (BodyHandle handle : cyclic)
-    unstable.push_back(WakeDecision{handle, WakeCause::kSupportCycle, handle, 0.0,
-                                    "its supports form a cycle"});
   return unstable;
 }
 

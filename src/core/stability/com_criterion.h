@@ -1,15 +1,28 @@
 #pragma once
 
 #include "stability/stability_criterion.h"
+#include "stability/support_graph.h"
 
 namespace brick_stack_sim {
 
-/// The thesis's basic rule (chapter 3.3) with its loads transmitted where
-/// they act (see distributeLoad) instead of its equation 10. A brick at rest
-/// whose own COM lies inside the hull of its support patches may join the
-/// stack; in a component, loads pass from the top down, each brick's
-/// COM-above being the resultant of its own weight and the loads it
-/// receives, and a brick whose COM-above leaves its support hull cannot stay.
+/// The thesis's rule (chapters 3.3 to 3.5) with its loads transmitted where
+/// they act (see distributeLoad) instead of its equation 10, and its leaning
+/// done by statics.
+///
+/// A brick at rest whose own COM lies inside the hull of its support patches
+/// may join the stack. One that does not, but touches frozen bricks or the
+/// ground beside it, joins as leaning when contact forces within friction
+/// balance it with those as fixed supports (a small statics LP, any number
+/// of contacts); bricks placed at rest together (a V) are judged as a group.
+///
+/// In a component, loads pass from the top down. A brick's COM-above is
+/// where the resultant of its weight and the loads it receives crosses its
+/// support plane; it cannot stay when that point leaves its support hull,
+/// or when the sideways part exceeds friction. A group of leaning bricks
+/// (one plank, or the planks of a V) is balanced by the LP with what it
+/// leans on fixed, and passes the LP's contact forces, sideways parts
+/// included, to what it leans on: a pushed standing brick or a loaded
+/// cantilever tips.
 class ComCriterion : public StabilityCriterion {
  public:
   ComCriterion(const StabilityOptions& options, BodyNamer name_of);
@@ -19,8 +32,32 @@ class ComCriterion : public StabilityCriterion {
               FreezeDecision* decision) const override;
   std::vector<WakeDecision> check(SupportGraph* graph,
                                   const std::vector<BodyHandle>& component) const override;
+  bool usesSideContacts() const override { return true; }
+  bool admitsGroup(const std::vector<BodyMotion>& group,
+                   const std::vector<BrickStability>& stability,
+                   std::vector<FreezeDecision>* decisions) const override;
+
+ protected:
+  const StabilityOptions& options() const { return options_; }
 
  private:
+  /// One brick that passes its load down its supports: its COM-above from
+  /// the loads it receives, judged against its hull; its load split among
+  /// its supporters. False (and `unstable`) when it cannot stay.
+  bool passLoadDown(SupportGraph* graph, BodyHandle brick, std::vector<LoadShare>* shares,
+                    std::vector<WakeDecision>* unstable) const;
+  /// A group that holds a leaning brick: balanced by statics with what it
+  /// rests or leans on fixed, passing the contact forces on.
+  void balanceLeaning(SupportGraph* graph, const std::vector<BodyHandle>& group,
+                      std::vector<WakeDecision>* unstable) const;
+  /// Whether `bricks` (free), on their patches, with every supporter that
+  /// is not one of them fixed, stand.
+  bool stands(const std::vector<BodyMotion>& bricks,
+              const std::vector<const BrickStability*>& stability) const;
+  /// Whether it leans on something (a side contact other than a brick resting on it).
+  bool leans(const BrickStability& stability) const;
+  /// Admitted by statics: stable or leaning, and on what.
+  FreezeDecision admittedByStatics(const BodyMotion& brick, const BrickStability& stability) const;
   WakeDecision outsideSupport(BodyHandle brick, double margin) const;
 
   StabilityOptions options_;

@@ -19,6 +19,12 @@ struct BodyMotion {
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
 };
 
+/// A force applied at a point, world: a load one brick passes to another.
+struct PointForce {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< [N]
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< [m]
+};
+
 /// One point of a contact manifold as the physics engine solved it.
 struct ContactPoint {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< Midway between the surfaces, world [m].

@@ -10,8 +10,8 @@ namespace brick_stack_sim {
 namespace {
 
 /// The LP in Clp's column form. Rows: 6 per free body (force x, y, z, then
-/// torque about its COM x, y, z), in units of the heaviest free body's
-/// weight and (for torques) the problem's size, so Clp's absolute
+/// torque about its COM x, y, z), in units of the largest load on a free
+/// body (its weight or an applied force) and (for torques) the problem's size, so Clp's absolute
 /// tolerances mean the same at any brick size.
 class EquilibriumLp {
  public:
@@ -22,10 +22,12 @@ class EquilibriumLp {
       if (bodies[i].fixed) continue;
       row_of_[i] = rows;
       rows += 6;
-      weight_unit_ = std::max(weight_unit_, bodies[i].mass * options.gravity);
+      weight_unit_ = std::max(
+          {weight_unit_, bodies[i].mass * options.gravity, bodies[i].applied_force.norm()});
     }
     row_count_ = rows;
-    load_direction_ = Eigen::Vector3d(0.0, 0.0, -1.0) + options.extra_acceleration / options.gravity;
+    load_direction_ =
+        Eigen::Vector3d(0.0, 0.0, -1.0) + options.extra_acceleration / options.gravity;
     gravity_ = options.gravity;
     column_start_.push_back(0);
   }
@@ -40,8 +42,7 @@ class EquilibriumLp {
   void measureLevers(const std::vector<StaticsContact>& contacts) {
     for (const StaticsContact& c : contacts) {
       for (int body : {c.a, c.b})
-        if (free(body))
-          length_unit_ = std::max(length_unit_, (c.point - bodies_[body].com).norm());
+        if (free(body)) length_unit_ = std::max(length_unit_, (c.point - bodies_[body].com).norm());
     }
   }
 
@@ -81,8 +82,14 @@ class EquilibriumLp {
     bounds->assign(row_count_, 0.0);
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       if (!free(static_cast<int>(i))) continue;
-      const Eigen::Vector3d load = bodies_[i].mass * gravity_ / weight_unit_ * load_direction_;
-      for (int k = 0; k < 3; ++k) (*bounds)[row_of_[i] + k] = -load[k];
+      const StaticsBody& body = bodies_[i];
+      const Eigen::Vector3d load =
+          (body.mass * gravity_ * load_direction_ + body.applied_force) / weight_unit_;
+      const Eigen::Vector3d torque = body.applied_torque / (weight_unit_ * length_unit_);
+      for (int k = 0; k < 3; ++k) {
+        (*bounds)[row_of_[i] + k] = -load[k];
+        (*bounds)[row_of_[i] + 3 + k] = -torque[k];
+      }
     }
   }
 
@@ -209,8 +216,8 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
     const int row = lp.rowOf(static_cast<int>(i));
     if (row < 0) continue;
     for (int k = 0; k < 6; ++k)
-      solution.imbalance[i] += x[first_imbalance + 2 * (row + k)] +
-                               x[first_imbalance + 2 * (row + k) + 1];
+      solution.imbalance[i] +=
+          x[first_imbalance + 2 * (row + k)] + x[first_imbalance + 2 * (row + k) + 1];
     total += solution.imbalance[i];
   }
   for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -226,8 +233,8 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
 
 double horizontalAccelerationMargin(const std::vector<StaticsBody>& bodies,
                                     const std::vector<StaticsContact>& contacts,
-                                    const Eigen::Vector3d& direction,
-                                    const StaticsOptions& options, double cap) {
+                                    const Eigen::Vector3d& direction, const StaticsOptions& options,
+                                    double cap) {
   EquilibriumLp lp(bodies, options);
   if (lp.rowCount() == 0) return cap;
   lp.measureLevers(contacts);

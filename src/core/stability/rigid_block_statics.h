@@ -16,6 +16,11 @@ struct StaticsBody {
   double mass = 0.0;                              ///< [kg]
   Eigen::Vector3d com = Eigen::Vector3d::Zero();  ///< [m], world
   bool fixed = false;
+  /// Loads from outside the problem besides its weight (bricks resting or
+  /// leaning on it that are not bodies of the problem): force [N] and its
+  /// torque about `com` [N m], world.
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();
 };
 
 /// Marks a contact's second body as the fixed world (table, floor).
@@ -43,7 +48,7 @@ struct StaticsOptions {
   /// (e.g. a horizontal shake); it adds to gravity's.
   Eigen::Vector3d extra_acceleration = Eigen::Vector3d::Zero();
   /// Feasible when the least total imbalance is below this fraction of the
-  /// heaviest free body's weight [-].
+  /// largest load on a free body (weight or applied force) [-].
   double tolerance = 1e-7;
 };
 
@@ -54,8 +59,8 @@ struct StaticsSolution {
   /// Contact forces exist that balance every free body.
   bool feasible = false;
   /// Per body: the force and torque no admissible contact force can supply,
-  /// in the least-imbalance solution, as a fraction of the heaviest free
-  /// body's weight (torques over the problem's size) [-]; 0 for bodies that
+  /// in the least-imbalance solution, as a fraction of the largest load
+  /// on a free body (torques over the problem's size) [-]; 0 for bodies that
   /// are balanced, and for fixed ones. The bodies that must move.
   std::vector<double> imbalance;
   /// Per contact: the force on `a` in that solution [N], world.

@@ -3,10 +3,29 @@
 #include <algorithm>
 
 #include "stability/contact_classifier.h"
+#include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
 #include "util/text_format.h"
 
 namespace brick_stack_sim {
+
+namespace {
+
+/// `body` joins `graph` on its supports and side contacts. A frozen brick
+/// resting on it from above (it was slid under a bridge) gains it as a
+/// supporter: that brick's load now has one more way down.
+void join(SupportGraph* graph, const BodyMotion& body, bool leaning, BrickStability stability,
+          const StabilityOptions& options) {
+  std::vector<SupportPatch> side_contacts, carried;
+  for (SupportPatch& patch : stability.side_contacts)
+    (leansOn(patch, options) || !graph->contains(patch.supporter) ? side_contacts : carried)
+        .push_back(std::move(patch));
+  graph->add(body.handle, body.com, body.mass, std::move(stability.supports),
+             std::move(side_contacts), leaning);
+  for (SupportPatch& patch : carried) graph->addCarried(body.handle, std::move(patch));
+}
+
+}  // namespace
 
 StackStabilityModel::StackStabilityModel(const StabilityOptions& options, BodyNamer name_of,
                                          std::unique_ptr<StabilityCriterion> criterion)
@@ -135,8 +154,7 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
 
 void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision,
                                  BrickStability stability, StabilityDecisions* decisions) {
-  graph_.add(body.handle, body.com, body.mass, std::move(stability.supports),
-             std::move(stability.side_contacts));
+  join(&graph_, body, decision.kind == BrickState::kLeaning, std::move(stability), options_);
   rest_.erase(body.handle);
   decisions->freeze.push_back(std::move(decision));
 }
@@ -192,7 +210,7 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
   }
   // Its load on the stack below, judged on a copy of the components it joins.
   SupportGraph what_if = graph_.componentsOf(result.supporters);
-  what_if.add(brick.handle, brick.com, brick.mass, stability.supports, stability.side_contacts);
+  join(&what_if, brick, decision.kind == BrickState::kLeaning, stability, options_);
   StabilityDecisions consequences;
   settle(&what_if, nullptr, &consequences);
   for (const WakeDecision& woken : consequences.wake)

@@ -25,9 +25,10 @@ bool listsSupporter(const std::vector<SupportPatch>& patches, BodyHandle support
 }  // namespace
 
 void SupportGraph::add(BodyHandle brick, const Eigen::Vector3d& com, double mass,
-                       std::vector<SupportPatch> supports,
-                       std::vector<SupportPatch> side_contacts) {
+                       std::vector<SupportPatch> supports, std::vector<SupportPatch> side_contacts,
+                       bool leaning) {
   Node& node = nodes_[brick];
+  node.leaning = leaning;
   node.com = com;
   node.mass = mass;
   node.supports = std::move(supports);
@@ -46,6 +47,28 @@ void SupportGraph::add(BodyHandle brick, const Eigen::Vector3d& com, double mass
   for (const SupportPatch& patch : node.supports) link(patch.supporter);
   for (const SupportPatch& patch : node.side_contacts) link(patch.supporter);
   dirty_.insert(brick);
+}
+
+void SupportGraph::addCarried(BodyHandle carrier, SupportPatch patch) {
+  auto upper = nodes_.find(patch.supporter);
+  auto below = nodes_.find(carrier);
+  if (upper == nodes_.end() || below == nodes_.end()) return;
+  const BodyHandle brick = patch.supporter;
+  patch.supporter = carrier;
+  for (Eigen::Vector3d& normal : patch.normals) normal = -normal;
+  std::vector<SupportPatch>& supports = upper->second.supports;
+  // In supporter order, as every patch list.
+  auto at = std::find_if(supports.begin(), supports.end(), [&](const SupportPatch& existing) {
+    return existing.supporter >= carrier;
+  });
+  if (at != supports.end() && at->supporter == carrier) {
+    at->points.insert(at->points.end(), patch.points.begin(), patch.points.end());
+    at->normals.insert(at->normals.end(), patch.normals.begin(), patch.normals.end());
+  } else {
+    supports.insert(at, std::move(patch));
+  }
+  below->second.carries.insert(brick);
+  dirty_.insert(carrier);
 }
 
 void SupportGraph::unlinkFromSupporters(BodyHandle brick, const Node& node) {
@@ -125,31 +148,106 @@ std::vector<std::vector<BodyHandle>> SupportGraph::takeChangedComponents() {
   return components;
 }
 
-void SupportGraph::loadOrder(const std::vector<BodyHandle>& component,
-                             std::vector<BodyHandle>* order,
-                             std::vector<BodyHandle>* cyclic) const {
-  // Kahn's algorithm from the top: a brick is ready once everything it
-  // carries has passed its load down.
-  std::map<BodyHandle, int> waiting_for;
-  std::deque<BodyHandle> ready;
-  for (BodyHandle handle : component) {
-    const Node& node = nodes_.at(handle);
-    waiting_for[handle] = static_cast<int>(node.carries.size());
-    if (node.carries.empty()) ready.push_back(handle);
-  }
-  order->clear();
-  while (!ready.empty()) {
-    const BodyHandle handle = ready.front();
-    ready.pop_front();
-    waiting_for.erase(handle);
-    order->push_back(handle);
-    for (const SupportPatch& patch : nodes_.at(handle).supports) {
-      auto it = waiting_for.find(patch.supporter);
-      if (it != waiting_for.end() && --it->second == 0) ready.push_back(patch.supporter);
+namespace {
+
+/// Strongly connected components (Tarjan), iteratively: a tower of
+/// thousands of bricks is a path that deep. `edges[i]` lists the vertices i
+/// passes load to; returns each vertex's component number.
+std::vector<int> stronglyConnected(const std::vector<std::vector<int>>& edges) {
+  const int n = static_cast<int>(edges.size());
+  std::vector<int> index(n, -1), low(n, 0), component(n, -1), stack;
+  std::vector<bool> on_stack(n, false);
+  int next_index = 0, next_component = 0;
+  std::vector<std::pair<int, std::size_t>> calls;  // (vertex, next edge)
+  for (int root = 0; root < n; ++root) {
+    if (index[root] >= 0) continue;
+    calls.emplace_back(root, 0);
+    while (!calls.empty()) {
+      auto& [v, edge] = calls.back();
+      if (edge == 0 && index[v] < 0) {
+        index[v] = low[v] = next_index++;
+        stack.push_back(v);
+        on_stack[v] = true;
+      }
+      if (edge < edges[v].size()) {
+        const int w = edges[v][edge++];
+        if (index[w] < 0) {
+          calls.emplace_back(w, 0);
+        } else if (on_stack[w]) {
+          low[v] = std::min(low[v], index[w]);
+        }
+        continue;
+      }
+      if (low[v] == index[v]) {
+        for (int w = -1; w != v;) {
+          w = stack.back();
+          stack.pop_back();
+          on_stack[w] = false;
+          component[w] = next_component;
+        }
+        ++next_component;
+      }
+      const int finished = v;
+      calls.pop_back();
+      if (!calls.empty())
+        low[calls.back().first] = std::min(low[calls.back().first], low[finished]);
     }
   }
-  cyclic->clear();
-  for (const auto& [handle, count] : waiting_for) cyclic->push_back(handle);
+  return component;
+}
+
+}  // namespace
+
+std::vector<std::vector<BodyHandle>> SupportGraph::loadOrder(
+    const std::vector<BodyHandle>& component, const LeaningTest& leans_on) const {
+  std::map<BodyHandle, int> position;
+  for (std::size_t i = 0; i < component.size(); ++i) position[component[i]] = static_cast<int>(i);
+  // Who passes load to whom: supporters in order, then what a leaning brick leans on.
+  std::vector<std::vector<int>> edges(component.size());
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    const Node& node = nodes_.at(component[i]);
+    auto to = [&](const SupportPatch& patch) {
+      auto it = position.find(patch.supporter);
+      if (it != position.end()) edges[i].push_back(it->second);
+    };
+    for (const SupportPatch& patch : node.supports) to(patch);
+    if (node.leaning)
+      for (const SupportPatch& patch : node.side_contacts)
+        if (leans_on(patch)) to(patch);
+  }
+  const std::vector<int> group_of = stronglyConnected(edges);
+  const int group_count =
+      group_of.empty() ? 0 : *std::max_element(group_of.begin(), group_of.end()) + 1;
+  std::vector<std::vector<BodyHandle>> groups(group_count);
+  std::vector<int> waiting_for(group_count, 0);
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    groups[group_of[i]].push_back(component[i]);  // in handle order, as the component
+    for (int j : edges[i])
+      if (group_of[j] != group_of[i]) ++waiting_for[group_of[j]];
+  }
+  // Kahn's algorithm from the top: a group is ready once every group
+  // passing it load has passed it.
+  std::deque<int> ready;
+  std::vector<bool> queued(group_count, false);
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    const int group = group_of[i];
+    if (waiting_for[group] == 0 && !queued[group]) {
+      queued[group] = true;
+      ready.push_back(group);
+    }
+  }
+  std::vector<std::vector<BodyHandle>> order;
+  while (!ready.empty()) {
+    const int group = ready.front();
+    ready.pop_front();
+    for (BodyHandle handle : groups[group]) {
+      const int i = position.at(handle);
+      for (int j : edges[i])
+        if (group_of[j] != group && --waiting_for[group_of[j]] == 0) ready.push_back(group_of[j]);
+    }
+    order.push_back(std::move(groups[group]));
+  }
+  return order;
 }
 
 SupportGraph SupportGraph::componentsOf(const std::vector<BodyHandle>& seeds) const {

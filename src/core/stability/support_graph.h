@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <set>
 #include <vector>
@@ -31,8 +32,17 @@ class SupportGraph {
     /// load-passing criterion found them in its last check (kept here, not
     /// rebuilt, so a check allocates nothing for bricks it saw before).
     std::vector<LoadShare> received;
+    /// The forces of frozen leaning bricks on it, sideways parts included,
+    /// and the sideways part of what it carries, where they act (the last
+    /// check's, as `received`).
+    std::vector<PointForce> pushes;
+    /// Frozen as leaning: its load passes through its side contacts too.
+    bool leaning = false;
     BrickStability stability;
   };
+
+  /// Which side contacts of a leaning brick pass its load (leansOn).
+  using LeaningTest = std::function<bool(const SupportPatch&)>;
 
   /// A brick taken out with the load it carried, and why.
   struct Detached {
@@ -52,7 +62,13 @@ class SupportGraph {
   /// side contacts touch (both ways: bricks of a group frozen together list
   /// each other); its component is dirty.
   void add(BodyHandle brick, const Eigen::Vector3d& com, double mass,
-           std::vector<SupportPatch> supports, std::vector<SupportPatch> side_contacts = {});
+           std::vector<SupportPatch> supports, std::vector<SupportPatch> side_contacts = {},
+           bool leaning = false);
+  /// `carrier`, just frozen under the frozen brick `patch.supporter` (a prop
+  /// slid under a bridge), becomes one of its supporters: `patch`, seen
+  /// from the carrier (normals towards the brick above), joins that brick's
+  /// supports. Its component is dirty.
+  void addCarried(BodyHandle carrier, SupportPatch patch);
   /// Takes `brick` and, breadth first, everything it carries or that leans
   /// on it out of the graph, in the order they leave; their supporters that
   /// stay are dirty (their load changed). Empty when `brick` is not in the graph.
@@ -65,11 +81,14 @@ class SupportGraph {
   /// The components holding a brick that changed since the last call, each
   /// in handle order; forgets the changes.
   std::vector<std::vector<BodyHandle>> takeChangedComponents();
-  /// The order in which loads flow down a component: every brick after all
-  /// it carries. Bricks on a cycle of supports have no such order; they are
-  /// left out of `order` and listed in `cyclic`, in handle order.
-  void loadOrder(const std::vector<BodyHandle>& component, std::vector<BodyHandle>* order,
-                 std::vector<BodyHandle>* cyclic) const;
+  /// The order in which loads flow down a component: groups of bricks,
+  /// each after every group that passes it load. A brick passes load to
+  /// its supporters and, when leaning, to what it leans on (`leans_on`).
+  /// Bricks that pass load to each other (the planks of a V, a cycle of
+  /// supports) share a group; any other brick is a group of one. Each
+  /// group in handle order.
+  std::vector<std::vector<BodyHandle>> loadOrder(const std::vector<BodyHandle>& component,
+                                                 const LeaningTest& leans_on) const;
   /// A copy of the components that hold `seeds` (the part a what-if query
   /// can touch), with no pending changes.
   SupportGraph componentsOf(const std::vector<BodyHandle>& seeds) const;

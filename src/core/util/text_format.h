@@ -25,6 +25,22 @@ inline std::string millimetres(double metres) {
   return text.str();
 }
 
+/// A fraction written as a percentage: "12.5 %".
+inline std::string percent(double fraction) {
+  std::ostringstream text;
+  text.precision(3);
+  text << fraction * 100.0 << " %";
+  return text.str();
+}
+
+/// A force [N]: "0.115 N".
+inline std::string newtons(double force) {
+  std::ostringstream text;
+  text.precision(3);
+  text << force << " N";
+  return text.str();
+}
+
 /// "a, b, c".
 inline std::string joinNames(const std::vector<std::string>& names) {
   std::string text;

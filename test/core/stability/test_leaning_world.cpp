@@ -12,51 +12,22 @@
 
 #include "support/kapla.h"
 #include "support/leaning.h"
+#include "support/world_probe.h"
 
 namespace brick_stack_sim {
 namespace {
 
+using test::at;
+using test::displacement;
 using test::kKaplaLength;
 using test::kKaplaThickness;
+using test::worldWithFriction;
 
-/// A world in `mode` whose KAPLA and table both have friction `mu`, so
-/// every pair has it.
-std::unique_ptr<BrickWorld> worldWithFriction(const std::string& mode, double mu) {
-  BrickTypeLibrary types;
-  BrickType kapla = *test::packageTypes().find("kapla");
-  kapla.friction = mu;
-  EXPECT_TRUE(types.add(kapla).ok);
-  EXPECT_TRUE(types.setDefaultType("kapla").ok);
-  WorldOptions options = test::optionsFor(mode);
-  options.table.friction = mu;
-  std::unique_ptr<BrickWorld> world;
-  const Status created = BrickWorld::create(options, types, &world);
-  EXPECT_TRUE(created.ok) << created.message;
-  return world;
-}
+/// Statics beyond the thesis's COM rule (leaning, pushing, counterweights),
+/// in each mode that judges it.
+class StaticsInMode : public ::testing::TestWithParam<std::string> {};
 
-BrickPlacement at(const std::string& id, const Eigen::Isometry3d& pose) {
-  BrickPlacement p;
-  p.id = id;
-  p.pose = pose;
-  return p;
-}
-
-BrickSnapshot brick(const BrickWorld& world, const std::string& id) {
-  BrickSnapshot snapshot;
-  EXPECT_TRUE(world.find(id, &snapshot)) << id;
-  return snapshot;
-}
-
-/// How far a brick's centre is from where it was placed [m].
-double displacement(const BrickWorld& world, const std::string& id) {
-  const BrickSnapshot b = brick(world, id);
-  return (b.pose.translation() - b.placed_pose.translation()).norm();
-}
-
-class LeaningInMode : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(LeaningInMode, VOfPlanksPlacedAtRestStandsBelowTheThresholdAndFallsAbove) {
+TEST_P(StaticsInMode, VOfPlanksPlacedAtRestStandsBelowTheThresholdAndFallsAbove) {
   for (double mu : {0.3, 0.5}) {
     for (double factor : {0.9, 1.1}) {
       SCOPED_TRACE("mu " + std::to_string(mu) + ", " + std::to_string(factor) + " x threshold");
@@ -65,28 +36,30 @@ TEST_P(LeaningInMode, VOfPlanksPlacedAtRestStandsBelowTheThresholdAndFallsAbove)
       ASSERT_TRUE(world->addBrick(at("left", left)).ok);
       ASSERT_TRUE(world->addBrick(at("right", right)).ok);
       const bool stands = factor < 1.0;
-      EXPECT_EQ(brick(*world, "left").state, stands ? BrickState::kLeaning : BrickState::kDynamic);
-      EXPECT_EQ(brick(*world, "right").state, stands ? BrickState::kLeaning : BrickState::kDynamic);
+      EXPECT_EQ(test::snapshotOf(*world, "left").state,
+                stands ? BrickState::kLeaning : BrickState::kDynamic);
+      EXPECT_EQ(test::snapshotOf(*world, "right").state,
+                stands ? BrickState::kLeaning : BrickState::kDynamic);
       test::runFor(world.get(), 1.0);
       if (stands) {
-        EXPECT_EQ(brick(*world, "left").state, BrickState::kLeaning);
+        EXPECT_EQ(test::snapshotOf(*world, "left").state, BrickState::kLeaning);
         EXPECT_EQ(displacement(*world, "left"), 0.0);
         EXPECT_EQ(displacement(*world, "right"), 0.0);
       } else {
         // The apex, at L cos(theta) ~ 7 cm, comes down: the planks lie flat.
-        EXPECT_LT(brick(*world, "left").pose.translation().z(), 0.02);
-        EXPECT_LT(brick(*world, "right").pose.translation().z(), 0.02);
+        EXPECT_LT(test::snapshotOf(*world, "left").pose.translation().z(), 0.02);
+        EXPECT_LT(test::snapshotOf(*world, "right").pose.translation().z(), 0.02);
       }
     }
   }
 }
 
-TEST_P(LeaningInMode, OnePlankOfAVAloneIsNotHeld) {
+TEST_P(StaticsInMode, OnePlankOfAVAloneIsNotHeld) {
   auto world = worldWithFriction(GetParam(), 0.5);
   ASSERT_TRUE(world->addBrick(at("left", test::vPlanks(0.5).first)).ok);
-  EXPECT_EQ(brick(*world, "left").state, BrickState::kDynamic);
+  EXPECT_EQ(test::snapshotOf(*world, "left").state, BrickState::kDynamic);
   test::runFor(world.get(), 1.0);
-  EXPECT_LT(brick(*world, "left").pose.translation().z(), 0.02);
+  EXPECT_LT(test::snapshotOf(*world, "left").pose.translation().z(), 0.02);
 }
 
 /// A card house of two levels (thesis figure 10), built V by V: two V's
@@ -116,7 +89,7 @@ std::vector<BrickPlacement> twoLevelCardHouse() {
   return bricks;
 }
 
-TEST_P(LeaningInMode, TwoLevelCardHouseBuiltVByVStandsStill) {
+TEST_P(StaticsInMode, TwoLevelCardHouseBuiltVByVStandsStill) {
   auto world = worldWithFriction(GetParam(), 0.5);
   for (const BrickPlacement& placement : twoLevelCardHouse()) {
     const Status placed = world->addBrick(placement);
@@ -126,9 +99,102 @@ TEST_P(LeaningInMode, TwoLevelCardHouseBuiltVByVStandsStill) {
   }
   test::runFor(world.get(), 2.0);
   for (const BrickPlacement& placement : twoLevelCardHouse()) {
-    const BrickSnapshot b = brick(*world, placement.id);
+    const BrickSnapshot b = test::snapshotOf(*world, placement.id);
     EXPECT_NE(b.state, BrickState::kDynamic) << placement.id;
     EXPECT_EQ(displacement(*world, placement.id), 0.0) << placement.id;
+  }
+}
+
+/// A KAPLA standing on its end on the table, its thickness along x, its
+/// left face at x = 0.
+Eigen::Isometry3d standingOnEnd() {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = test::leaningRotation(0.0);
+  pose.translation() = Eigen::Vector3d(0.5 * kKaplaThickness, 0.0, 0.5 * kKaplaLength);
+  return pose;
+}
+
+TEST_P(StaticsInMode, PlankLeaningOnABrickStandingOnItsEndTopplesIt) {
+  // A plank at theta = 30 degrees from vertical, its upper inner edge on the
+  // standing brick's face at h = L cos = 101 mm. Moments about its foot
+  // (ladderThresholdAngle): H (cos + mu sin) L = m g (L sin - T cos) / 2
+  // with the face's friction F <= mu H, so the push is at least
+  // H = m g (0.5 - 0.0667 * 0.866) / (2 (0.866 + 0.25)) = 0.198 m g at mu
+  // 0.5 (the plank stands: 30 < 55.3 degrees). The standing brick tips
+  // about its far edge once H h > m g T/2 + F T: 20.1 > 3.9 + 0.77 (m g mm).
+  // It topples, and the plank with it.
+  auto world = worldWithFriction(GetParam(), 0.5);
+  ASSERT_TRUE(world->addBrick(at("standing", standingOnEnd())).ok);
+  test::runFor(world.get(), 0.5);
+  ASSERT_EQ(test::snapshotOf(*world, "standing").state, BrickState::kStable);
+  ASSERT_EQ(displacement(*world, "standing"), 0.0);
+  const double theta = 30.0 * M_PI / 180.0;
+  ASSERT_GT(test::ladderThresholdAngle(0.5, 0.5), theta);
+  ASSERT_TRUE(world->addBrick(at("plank", test::plankLeaningTowardsX(theta, 0.0))).ok);
+  EXPECT_EQ(test::snapshotOf(*world, "standing").state, BrickState::kDynamic);
+  test::runFor(world.get(), 2.0);
+  // Standing, its centre is L/2 = 58.5 mm up; lying, at most W/2.
+  EXPECT_LT(test::snapshotOf(*world, "standing").pose.translation().z(), 0.3 * kKaplaLength);
+  EXPECT_GT(test::turn(*world, "standing"), 0.5);
+}
+
+/// A cantilever: p0 and p1 flat on the table at x = 0, p2 on them at
+/// x = `offset` (its COM L/2 - offset inside p1's edge at x = L/2; its free
+/// end at offset + L/2, its top at 3 T), and a plank at 20 degrees from
+/// horizontal, rising towards -x, its lower face on p2's free top edge E and
+/// its foot on the table.
+std::vector<BrickPlacement> loadedCantilever(double offset) {
+  std::vector<BrickPlacement> bricks;
+  for (int level = 0; level < 3; ++level)
+    bricks.push_back(test::placement(
+        "p" + std::to_string(level),
+        Eigen::Vector3d(level == 2 ? offset : 0.0, 0.0, (level + 0.5) * kKaplaThickness)));
+  const double slope = 20.0 * M_PI / 180.0;
+  const Eigen::Vector3d along(std::cos(slope), 0.0, -std::sin(slope));  // down towards the foot
+  const Eigen::Vector3d up(std::sin(slope), 0.0, std::cos(slope));      // its lower face's normal
+  const Eigen::Vector3d edge(offset + 0.5 * kKaplaLength, 0.0, 3.0 * kKaplaThickness);
+  const Eigen::Vector3d foot = edge + (3.0 * kKaplaThickness / std::sin(slope)) * along;
+  Eigen::Isometry3d plank = Eigen::Isometry3d::Identity();
+  plank.linear() = Eigen::AngleAxisd(slope, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  plank.translation() = foot - 0.5 * kKaplaLength * along + 0.5 * kKaplaThickness * up;
+  bricks.push_back(at("plank", plank));
+  return bricks;
+}
+
+TEST_P(StaticsInMode, PlankRestingOnACantileversFreeEndTipsItUnlessItSitsDeep) {
+  // The plank's foot is d = 3 T / sin 20 = 68.4 mm from E along it. Its COM
+  // is (L/2) cos 20 - (T/2) sin 20 = 53.6 mm from the foot horizontally,
+  // inside E's 64.3: it leans on E. The face's friction passes through the
+  // foot, so moments about the foot give the normal force at E exactly:
+  // N = m g 53.6 / 68.4 = 0.78 m g, at 20 degrees from vertical. On p2 it
+  // presses down between N (cos 20 -/+ mu sin 20) = 0.60 and 0.87 m g (mu
+  // 0.5) at `offset` beyond p1's edge, and sideways (towards p1) with at
+  // most N (sin 20 + mu cos 20) = 0.63 m g at T above that edge.
+  //  - offset 0.4 L: about the edge, at least 0.60 * 0.4 L - 0.63 * 0.067 L
+  //    = 0.20 L (m g) tips against p2's own 0.1 L: it tips.
+  //  - offset 0.1 L: at most 0.87 * 0.1 L = 0.087 L tips against 0.4 L: it
+  //    stands, and so does the plank.
+  for (const double offset : {0.4 * kKaplaLength, 0.1 * kKaplaLength}) {
+    const bool tips = offset > 0.2 * kKaplaLength;
+    SCOPED_TRACE(tips ? "cantilever at 0.4 L" : "cantilever at 0.1 L");
+    auto world = worldWithFriction(GetParam(), 0.5);
+    const std::vector<BrickPlacement> bricks = loadedCantilever(offset);
+    for (std::size_t i = 0; i + 1 < bricks.size(); ++i)
+      ASSERT_TRUE(world->addBrick(bricks[i]).ok) << bricks[i].id;
+    test::runFor(world.get(), 0.5);
+    ASSERT_EQ(test::snapshotOf(*world, "p2").state, BrickState::kStable);
+    ASSERT_EQ(displacement(*world, "p2"), 0.0);
+    ASSERT_TRUE(world->addBrick(bricks.back()).ok);
+    test::runFor(world.get(), 2.0);
+    if (tips) {
+      EXPECT_GT(test::turn(*world, "p2"), 0.1);
+    } else {
+      EXPECT_EQ(test::snapshotOf(*world, "p2").state, BrickState::kStable);
+      EXPECT_EQ(test::snapshotOf(*world, "plank").state, BrickState::kLeaning);
+      EXPECT_EQ(displacement(*world, "p2"), 0.0);
+      EXPECT_EQ(displacement(*world, "plank"), 0.0);
+    }
+    EXPECT_EQ(test::snapshotOf(*world, "p0").state, BrickState::kStable);
   }
 }
 
@@ -147,8 +213,6 @@ TEST(PlainBullet, TwoLevelCardHouseIsReportedNotJudged) {
               1e3 * worst);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, LeaningInMode, ::testing::Values("equilibrium"));
-
 /// Flat KAPLAs placed at rest one per level from the table up, centred at
 /// `x[i]` L; returns the world after `seconds`.
 std::unique_ptr<BrickWorld> flatStack(const std::string& mode, const std::vector<double>& x,
@@ -164,32 +228,35 @@ std::unique_ptr<BrickWorld> flatStack(const std::string& mode, const std::vector
   return world;
 }
 
-TEST(Equilibrium, CounterweightedOverhangsFreezeWithZeroDrift) {
+TEST_P(StaticsInMode, CounterweightedOverhangsFreezeWithZeroDrift) {
   // The stacks of RigidBlockStatics.CounterweightsHoldOverhangsThatFallWithoutThem.
   for (const std::vector<double>& x :
        {std::vector<double>{0.0, 0.7, 0.25}, std::vector<double>{0.0, 0.75, 0.35, 0.25}}) {
-    auto world = flatStack("equilibrium", x, 2.0);
+    auto world = flatStack(GetParam(), x, 2.0);
     for (std::size_t level = 0; level < x.size(); ++level) {
       const std::string id = "p" + std::to_string(level);
-      EXPECT_EQ(brick(*world, id).state, BrickState::kStable) << id << " of " << x.size();
+      EXPECT_EQ(test::snapshotOf(*world, id).state, BrickState::kStable)
+          << id << " of " << x.size();
       EXPECT_EQ(displacement(*world, id), 0.0) << id << " of " << x.size();
     }
   }
 }
 
-TEST(Equilibrium, OverhangsWithoutTheirLastCounterweightFall) {
+TEST_P(StaticsInMode, OverhangsWithoutTheirLastCounterweightFall) {
   for (const std::vector<double>& x :
        {std::vector<double>{0.0, 0.7}, std::vector<double>{0.0, 0.75, 0.35}}) {
-    auto world = flatStack("equilibrium", x, 2.0);
+    auto world = flatStack(GetParam(), x, 2.0);
     // The overhanging plank tips over its base's edge until its end
     // reaches the table: its centre drops and it turns.
-    const BrickSnapshot plank = brick(*world, "p1");
+    const BrickSnapshot plank = test::snapshotOf(*world, "p1");
     EXPECT_LT(plank.pose.translation().z(), 1.5 * kKaplaThickness - 1e-3) << x.size();
     const double tilt = std::acos(std::min(1.0, plank.pose.linear()(2, 2)));
     EXPECT_GT(tilt, 0.05) << x.size();
-    EXPECT_EQ(brick(*world, "p0").state, BrickState::kStable);
+    EXPECT_EQ(test::snapshotOf(*world, "p0").state, BrickState::kStable);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, StaticsInMode, ::testing::Values("com", "equilibrium"));
 
 }  // namespace
 }  // namespace brick_stack_sim

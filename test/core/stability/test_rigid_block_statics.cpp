@@ -29,6 +29,11 @@ class StaticsScene {
     bodies_.push_back(StaticsBody{mass, pose.translation(), fixed});
     return static_cast<int>(bodies_.size()) - 1;
   }
+  /// A load on `body` from outside the problem: `force` [N] at `point`.
+  void applyLoad(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) {
+    bodies_[body].applied_force += force;
+    bodies_[body].applied_torque += (point - bodies_[body].com).cross(force);
+  }
   /// The friction of the pair (i, j) when it differs from the scene's.
   void setFriction(int i, int j, double friction) { pair_friction_.push_back({i, j, friction}); }
 
@@ -134,8 +139,8 @@ TEST_P(Ladder, PlankAgainstAHeavyBlockStandsByItsOwnFormula) {
     const int plank = scene.add(test::plankLeaningTowardsX(factor * threshold, 0.0));
     // A block of 50 plank masses whose face is the plane x = 0: the wall.
     const Eigen::Vector3d wall_half(0.05, 0.05, 0.1);
-    const int wall = scene.add(flatAt(wall_half.x(), wall_half.z()), 50 * kKaplaMass, false,
-                               wall_half);
+    const int wall =
+        scene.add(flatAt(wall_half.x(), wall_half.z()), 50 * kKaplaMass, false, wall_half);
     scene.setFriction(plank, wall, mu_wall);
     EXPECT_EQ(scene.stands(), factor < 1.0) << "wall friction " << mu_wall << ", " << factor;
   }
@@ -188,13 +193,37 @@ TEST(RigidBlockStatics, CounterweightsHoldOverhangsThatFallWithoutThem) {
   EXPECT_FALSE(flatStackStands({0.0, 0.75, 0.35}));
 }
 
+TEST(RigidBlockStatics, AppliedLoadsTipABrickOnItsEndAtTheLeverRule) {
+  // A push H along x on the top of a KAPLA standing on its end (height L,
+  // thickness T along x) tips it about its far edge once H L > m g T / 2;
+  // it would slide only at mu m g = 0.5 m g, far beyond.
+  const double g = 9.81, tipping = kKaplaMass * g * 0.5 * kKaplaThickness / kKaplaLength;
+  // Centred on x = 0.
+  const Eigen::Isometry3d on_end = test::plankLeaningTowardsX(0.0, 0.5 * kKaplaThickness);
+  for (double factor : {0.95, 1.05}) {
+    StaticsScene scene(0.5);
+    const int brick = scene.add(on_end);
+    scene.applyLoad(brick, Eigen::Vector3d(factor * tipping, 0.0, 0.0),
+                    Eigen::Vector3d(0.0, 0.0, kKaplaLength));
+    EXPECT_EQ(scene.stands(), factor < 1.0) << factor;
+  }
+  // Its own weight again pressing on the middle of its top doubles what
+  // holds it: 1.9 times the push stands.
+  StaticsScene pressed(0.5);
+  const int brick = pressed.add(on_end);
+  pressed.applyLoad(brick, Eigen::Vector3d(1.9 * tipping, 0.0, -kKaplaMass * g),
+                    Eigen::Vector3d(0.0, 0.0, kKaplaLength));
+  EXPECT_TRUE(pressed.stands());
+}
+
 TEST(RigidBlockStatics, AccelerationMarginIsWhereItSlidesOrTips) {
   // Flat on the table it slides first: mu g. On its end it tips about an
   // edge first: g (T/2) / (L/2), below mu g.
   const double mu = 0.5, g = 9.81;
   StaticsScene flat(mu);
   flat.add(flatAt(0.0, 0.5 * kKaplaThickness));
-  std::vector<StaticsBody> bodies{{kKaplaMass, flatAt(0.0, 0.5 * kKaplaThickness).translation(), false}};
+  std::vector<StaticsBody> bodies{
+      {kKaplaMass, flatAt(0.0, 0.5 * kKaplaThickness).translation(), false}};
   EXPECT_NEAR(horizontalAccelerationMargin(bodies, flat.contacts(), Eigen::Vector3d::UnitX()),
               mu * g, 1e-6);
   StaticsScene standing(mu);

@@ -47,12 +47,17 @@ TEST(SupportGraph, ChangedComponentsAreTakenOnce) {
   EXPECT_TRUE(graph.takeChangedComponents().empty());
 }
 
+const SupportGraph::LeaningTest kAnySideContact = [](const SupportPatch&) { return true; };
+
 TEST(SupportGraph, LoadsFlowFromTheTopDown) {
   SupportGraph graph = twoStacks();
-  std::vector<BodyHandle> order, cyclic;
-  graph.loadOrder({0, 1, 2, 3}, &order, &cyclic);
-  EXPECT_TRUE(cyclic.empty());
-  ASSERT_EQ(order.size(), 4u);
+  const auto groups = graph.loadOrder({0, 1, 2, 3}, kAnySideContact);
+  ASSERT_EQ(groups.size(), 4u);
+  std::vector<BodyHandle> order;
+  for (const auto& group : groups) {
+    ASSERT_EQ(group.size(), 1u);
+    order.push_back(group[0]);
+  }
   auto position = [&](BodyHandle h) { return std::find(order.begin(), order.end(), h); };
   // Every brick after everything it carries.
   EXPECT_LT(position(3), position(1));
@@ -61,9 +66,9 @@ TEST(SupportGraph, LoadsFlowFromTheTopDown) {
   EXPECT_LT(position(2), position(0));
 }
 
-TEST(SupportGraph, BricksOnACycleHaveNoLoadOrder) {
+TEST(SupportGraph, BricksOnACycleShareAGroupAndWhatIsBelowStillGetsAnOrder) {
   // Contacts can say b5 rests on b6 and b6 on b5 (two bricks leaning on
-  // each other seen as support): no order of loads exists.
+  // each other seen as support): they pass load to each other, one group.
   SupportGraph graph;
   graph.add(4, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)});
   graph.add(5, Eigen::Vector3d::Zero(), 1.0, {on(4)});
@@ -71,10 +76,27 @@ TEST(SupportGraph, BricksOnACycleHaveNoLoadOrder) {
   graph.find(5)->supports.push_back(on(6));
   graph.find(6)->carries.insert(5);
   graph.add(7, Eigen::Vector3d::Zero(), 1.0, {on(6)});
-  std::vector<BodyHandle> order, cyclic;
-  graph.loadOrder({4, 5, 6, 7}, &order, &cyclic);
-  EXPECT_EQ(order, (std::vector<BodyHandle>{7}));  // only the top can pass its load on
-  EXPECT_EQ(cyclic, (std::vector<BodyHandle>{4, 5, 6}));
+  const auto groups = graph.loadOrder({4, 5, 6, 7}, kAnySideContact);
+  EXPECT_EQ(groups, (std::vector<std::vector<BodyHandle>>{{7}, {5, 6}, {4}}));
+}
+
+TEST(SupportGraph, LeaningBricksPassLoadToWhatTheyLeanOnOthersDoNot) {
+  // A V (b1, b2 leaning on each other on the table), a flat plank b3 on its
+  // apex, and b4 standing beside b5 touching it (stable, not leaning).
+  SupportGraph graph;
+  graph.add(1, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)}, {on(2)}, /*leaning=*/true);
+  graph.add(2, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)}, {on(1)}, /*leaning=*/true);
+  graph.add(3, Eigen::Vector3d::Zero(), 1.0, {on(1), on(2)});
+  graph.add(5, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)});
+  graph.add(4, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)}, {on(5)});
+  EXPECT_EQ(graph.loadOrder({1, 2, 3}, kAnySideContact),
+            (std::vector<std::vector<BodyHandle>>{{3}, {1, 2}}));
+  EXPECT_EQ(graph.loadOrder({4, 5}, kAnySideContact),
+            (std::vector<std::vector<BodyHandle>>{{4}, {5}}));
+  // A side contact the test rejects (from above) passes nothing: no group.
+  const SupportGraph::LeaningTest none = [](const SupportPatch&) { return false; };
+  EXPECT_EQ(graph.loadOrder({1, 2, 3}, none),
+            (std::vector<std::vector<BodyHandle>>{{3}, {1}, {2}}));
 }
 
 TEST(SupportGraph, DetachingTakesEverythingCarriedOnceInBreadthFirstOrder) {

@@ -154,7 +154,9 @@ const Expected kExpected[] = {
     {"built_tower", "none", 0x4678dd54763cd250ULL},
     {"built_tower", "com", 0x7a00383680c6e0c3ULL},
     {"pile", "none", 0xf8b0a963969f3642ULL},
-    {"pile", "com", 0x4db00c06888ab87aULL},
+    // Issue 8: com freezes bricks that lean on others in the pile when
+    // statics balances them, as equilibrium does, so the pile now ends as there.
+    {"pile", "com", 0xb614af0595890d71ULL},
     {"slant_tower", "none", 0xd505bbb3036cc0c3ULL},
     {"slant_tower", "com", 0x0f7d5a6d78caecd7ULL},
     {"remove_and_push", "none", 0xf6bc43f641e5d6e3ULL},

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "stability/rigid_block_statics.h"
+#include "stability/stability_model.h"
+
+namespace brick_stack_sim {
+
+/// Whether a side contact is one the brick leans on: not something resting
+/// on it from above (a counterweight, a plank's edge), whose load reaches the
+/// brick through that brick's own supports. Judged on the patch's normals.
+bool leansOn(const SupportPatch& side_contact, const StabilityOptions& options);
+
+/// The statics problem (solveStatics) of some bricks of a stack, built from
+/// their support patches: the bricks added are free, every other supporter
+/// is fixed (the ground, or a frozen brick taken as immovable).
+class StaticsAssembly {
+ public:
+  explicit StaticsAssembly(const StabilityOptions& options) : options_(options) {}
+
+  /// `brick` is a free body; returns its index.
+  int addFree(BodyHandle brick, double mass, const Eigen::Vector3d& com);
+  /// A load on free body `body` from outside the problem.
+  void addLoad(int body, const PointForce& load);
+  /// The contacts of free body `body` on `patches`. A contact from above
+  /// with a fixed body is left out: a frozen brick resting on it passes its
+  /// load as one (addLoad), and could otherwise hold it down.
+  void addPatches(int body, const std::vector<SupportPatch>& patches);
+
+  const std::vector<StaticsBody>& bodies() const { return bodies_; }
+  const std::vector<StaticsContact>& contacts() const { return contacts_; }
+  /// The body each contact's `b` stands for (a supporter handle).
+  BodyHandle otherOf(std::size_t contact) const { return others_[contact]; }
+  /// Whether `handle` is a free body of the problem.
+  bool isFree(BodyHandle handle) const { return index_.count(handle) > 0; }
+
+  StaticsSolution solve() const;
+
+ private:
+  StabilityOptions options_;
+  std::map<BodyHandle, int> index_;
+  std::vector<StaticsBody> bodies_;
+  std::vector<StaticsContact> contacts_;
+  std::vector<BodyHandle> others_;
+};
+
+}  // namespace brick_stack_sim
