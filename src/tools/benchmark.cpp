@@ -169,6 +169,16 @@ double rmsDistance(const std::vector<BrickSnapshot>& a, const std::vector<BrickS
   return count ? std::sqrt(sum / count) : 0.0;
 }
 
+/// Structures built brick by brick as a user would, every mode side by
+/// side: the thesis's 25-layer tower (one brick a second) and its card
+/// house (a V every half second), each until 5 s after the last placement.
+void addBuiltStructures(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
+  plan->cases.push_back(
+      makeCase("tower25_built", "tower25_built", BenchMetric::kSettled, 54.0, settings));
+  plan->cases.push_back(
+      makeCase("card_house", "card_house", BenchMetric::kSettled, 10.0, settings));
+}
+
 Status loadCaseScene(const std::string& name, const BenchContext& context, Scene* scene) {
   return loadScene(name, context.scene_dirs, context.types, scene);
 }
@@ -192,6 +202,7 @@ BenchPlan quickBenchPlan() {
                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  addBuiltStructures(settingsFor(allModes(), {{1.0 / 1000, 20}}), &plan);
   const auto model_only = settingsFor(modelModes(), {{1.0 / 1000, 20}});
   for (const char* scene : {"moving10", "settled2000_moving10"}) {
     plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));
@@ -227,6 +238,7 @@ BenchPlan fullBenchPlan() {
                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   for (const char* tower : {"tower10", "tower50"})
     plan.cases.push_back(makeCase(tower, tower, BenchMetric::kSettled, 30.0, defaults));
+  addBuiltStructures(defaults, &plan);
   const auto model_only = settingsFor(modelModes(), {{1.0 / 1000, 20}});
   for (const char* scene : {"moving10", "settled2000_moving10"}) {
     plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));

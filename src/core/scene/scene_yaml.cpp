@@ -99,6 +99,8 @@ constexpr GeneratorEntry kGenerators[] = {
     {"slant_tower", &readSlantTowerGenerator},
     {"pyramid", &readPyramidGenerator},
     {"pile", &readPileGenerator},
+    {"aframe", &readAFrameGenerator},
+    {"card_house", &readCardHouseGenerator},
 };
 
 void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,

@@ -214,10 +214,12 @@ void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHan
     evaluateSupport(node.com, &node.stability);
     node.supports = node.stability.supports;
   }
+  // A member that is not leaning (a level brick on a V) passes its load
+  // down its supports only, as everywhere else.
   for (std::size_t i = 0; i < group.size(); ++i) {
     const SupportGraph::Node& node = *graph->find(group[i]);
     assembly.addPatches(static_cast<int>(i), node.supports);
-    assembly.addPatches(static_cast<int>(i), node.side_contacts);
+    if (node.leaning) assembly.addPatches(static_cast<int>(i), node.side_contacts);
   }
   const StaticsSolution solution = assembly.solve();
   if (!solution.solved) {

@@ -215,6 +215,16 @@ std::vector<std::vector<BodyHandle>> SupportGraph::loadOrder(
       for (const SupportPatch& patch : node.side_contacts)
         if (leans_on(patch)) to(patch);
   }
+  // A brick resting on a leaning one shares its group (an edge back makes
+  // them one): how a leaning brick takes a load is for statics to say, not
+  // for a split of the load among supporters.
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    for (const SupportPatch& patch : nodes_.at(component[i]).supports) {
+      auto it = position.find(patch.supporter);
+      if (it != position.end() && nodes_.at(patch.supporter).leaning)
+        edges[it->second].push_back(static_cast<int>(i));
+    }
+  }
   const std::vector<int> group_of = stronglyConnected(edges);
   const int group_count =
       group_of.empty() ? 0 : *std::max_element(group_of.begin(), group_of.end()) + 1;

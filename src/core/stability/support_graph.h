@@ -85,7 +85,8 @@ class SupportGraph {
   /// each after every group that passes it load. A brick passes load to
   /// its supporters and, when leaning, to what it leans on (`leans_on`).
   /// Bricks that pass load to each other (the planks of a V, a cycle of
-  /// supports) share a group; any other brick is a group of one. Each
+  /// supports) share a group, and so does a brick resting on a leaning one
+  /// (a level brick on two V's); any other brick is a group of one. Each
   /// group in handle order.
   std::vector<std::vector<BodyHandle>> loadOrder(const std::vector<BodyHandle>& component,
                                                  const LeaningTest& leans_on) const;

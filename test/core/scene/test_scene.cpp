@@ -139,8 +139,56 @@ TEST(Scene, TowerRefusesBadParameters) {
   EXPECT_TRUE(bricks.empty());
 }
 
+TEST(Scene, AFrameIsTwoMirroredPlanksMeetingAtTheApex) {
+  AFrameParams params;
+  params.angle = 0.349;
+  params.origin = Eigen::Vector2d(0.1, -0.05);
+  std::vector<ScheduledBrick> bricks;
+  ASSERT_TRUE(generateAFrame(params, test::packageTypes(), &bricks).ok);
+  ASSERT_EQ(bricks.size(), 2u);
+  const Eigen::Isometry3d& left = bricks[0].placement.pose;
+  const Eigen::Isometry3d& right = bricks[1].placement.pose;
+  // Each length axis leans by the angle from vertical, towards the other.
+  EXPECT_NEAR(std::acos(left.linear().col(0).cwiseAbs().z()), params.angle, 1e-12);
+  EXPECT_NEAR(std::acos(right.linear().col(0).cwiseAbs().z()), params.angle, 1e-12);
+  EXPECT_NEAR(left.translation().x() + right.translation().x(), 2 * 0.1, 1e-12);
+  EXPECT_NEAR(left.translation().y(), -0.05, 1e-12);
+  // The centre of a plank on its inner foot edge: (L cos + T sin) / 2 up.
+  const double a = params.angle;
+  EXPECT_NEAR(left.translation().z(),
+              0.5 * (kKaplaLength * std::cos(a) + kKaplaThickness * std::sin(a)), 1e-12);
+  EXPECT_EQ(bricks[0].at, bricks[1].at);  // a V is placed whole or not at all
+}
+
+TEST(Scene, CardHouseHasItsRowsAndRefusesWhatCannotStand) {
+  CardHouseParams params;
+  params.levels = 3;
+  params.interval = 0.5;
+  std::vector<ScheduledBrick> bricks;
+  ASSERT_TRUE(generateCardHouse(params, test::packageTypes(), &bricks).ok);
+  // 3 + 2 + 1 V's of two planks, 2 + 1 level planks.
+  ASSERT_EQ(bricks.size(), 15u);
+  // Both planks of a V at one time: V's and level planks alternate in time.
+  EXPECT_EQ(bricks[0].at, bricks[1].at);
+  EXPECT_EQ(bricks[6].at - bricks[5].at, 0.5);
+  for (const ScheduledBrick& b : bricks) EXPECT_GE(b.placement.pose.translation().z(), 0.0);
+  for (const double angle : {0.0, -0.1, 2.0, std::nan("")}) {
+    params.angle = angle;
+    EXPECT_FALSE(generateCardHouse(params, test::packageTypes(), &bricks).ok) << angle;
+  }
+  // At 40 degrees a V is wider than a level plank: one level only.
+  params.angle = 40.0 * M_PI / 180.0;
+  const Status wide = generateCardHouse(params, test::packageTypes(), &bricks);
+  EXPECT_FALSE(wide.ok);
+  EXPECT_NE(wide.message.find("levels: 1"), std::string::npos) << wide.message;
+  params.levels = 1;
+  EXPECT_TRUE(generateCardHouse(params, test::packageTypes(), &bricks).ok);
+  params.levels = 0;
+  EXPECT_FALSE(generateCardHouse(params, test::packageTypes(), &bricks).ok);
+}
+
 TEST(Scene, PackageScenesAllLoad) {
-  for (const char* name : {"tower10", "tower25_built", "single_drop"}) {
+  for (const char* name : {"tower10", "tower25_built", "single_drop", "card_house", "aframe"}) {
     Scene scene;
     const Status s = loadScene(name, {test::dataPath("scenes")}, test::packageTypes(), &scene);
     EXPECT_TRUE(s.ok) << s.message;

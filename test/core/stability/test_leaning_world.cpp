@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/scene/generators.h"
 #include "support/kapla.h"
 #include "support/leaning.h"
 #include "support/world_probe.h"
@@ -195,6 +196,41 @@ TEST_P(StaticsInMode, PlankRestingOnACantileversFreeEndTipsItUnlessItSitsDeep) {
       EXPECT_EQ(displacement(*world, "plank"), 0.0);
     }
     EXPECT_EQ(test::snapshotOf(*world, "p0").state, BrickState::kStable);
+  }
+}
+
+TEST_P(StaticsInMode, CardHousesFromTheGeneratorStandStill) {
+  // Every V at 20 degrees, far below its 46.9-degree threshold at mu 0.5;
+  // each level brick rests on half of each of two apexes, its COM between
+  // them. Placed all at once (interval 0) and V by V (interval 0.1 s).
+  for (const int levels : {3, 4}) {
+    for (const double interval : {0.0, 0.1}) {
+      SCOPED_TRACE(std::to_string(levels) + " levels, interval " + std::to_string(interval));
+      auto world = worldWithFriction(GetParam(), 0.5);
+      CardHouseParams params;
+      params.levels = levels;
+      params.angle = 20.0 * M_PI / 180.0;
+      params.interval = interval;
+      std::vector<ScheduledBrick> house;
+      ASSERT_TRUE(generateCardHouse(params, world->types(), &house).ok);
+      // levels (levels + 1) / 2 V's of two, and a level brick fewer per row.
+      ASSERT_EQ(house.size(),
+                static_cast<std::size_t>(levels * (levels + 1) + (levels - 1) * levels / 2));
+      std::size_t next = 0;
+      for (double t = 0.0; next < house.size(); t += world->options().time_step) {
+        for (; next < house.size() && house[next].at <= t; ++next) {
+          const Status placed = world->addBrick(house[next].placement);
+          ASSERT_TRUE(placed.ok) << house[next].placement.id << ": " << placed.message;
+        }
+        world->step();
+      }
+      test::runFor(world.get(), 1.0);
+      for (const ScheduledBrick& b : house) {
+        EXPECT_NE(test::snapshotOf(*world, b.placement.id).state, BrickState::kDynamic)
+            << b.placement.id;
+        EXPECT_EQ(displacement(*world, b.placement.id), 0.0) << b.placement.id;
+      }
+    }
   }
 }
 

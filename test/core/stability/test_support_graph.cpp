@@ -89,13 +89,18 @@ TEST(SupportGraph, LeaningBricksPassLoadToWhatTheyLeanOnOthersDoNot) {
   graph.add(3, Eigen::Vector3d::Zero(), 1.0, {on(1), on(2)});
   graph.add(5, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)});
   graph.add(4, Eigen::Vector3d::Zero(), 1.0, {on(kTableHandle)}, {on(5)});
+  // The plank on the V shares its group: statics splits its load.
   EXPECT_EQ(graph.loadOrder({1, 2, 3}, kAnySideContact),
-            (std::vector<std::vector<BodyHandle>>{{3}, {1, 2}}));
+            (std::vector<std::vector<BodyHandle>>{{1, 2, 3}}));
   EXPECT_EQ(graph.loadOrder({4, 5}, kAnySideContact),
             (std::vector<std::vector<BodyHandle>>{{4}, {5}}));
-  // A side contact the test rejects (from above) passes nothing: no group.
+  // Side contacts the test rejects (from above) pass nothing: only the
+  // plank ties the V's planks together.
   const SupportGraph::LeaningTest none = [](const SupportPatch&) { return false; };
-  EXPECT_EQ(graph.loadOrder({1, 2, 3}, none),
+  EXPECT_EQ(graph.loadOrder({1, 2, 3}, none), (std::vector<std::vector<BodyHandle>>{{1, 2, 3}}));
+  // Not leaning, the planks take the plank's load as supporters do.
+  graph.find(1)->leaning = graph.find(2)->leaning = false;
+  EXPECT_EQ(graph.loadOrder({1, 2, 3}, kAnySideContact),
             (std::vector<std::vector<BodyHandle>>{{3}, {1}, {2}}));
 }
 

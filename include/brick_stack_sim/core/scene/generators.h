@@ -75,6 +75,36 @@ struct PileParams {
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the lattice [m].
 };
 
+/// Parameters of the `aframe` generator: one inverted V (the card house's
+/// element), two bricks on their ends leaning on each other, each tilted by
+/// `angle` from vertical with their upper inner edges meeting at the apex.
+/// Statics: with friction mu on the table and between the bricks, it stands
+/// while tan(angle) <= 2 mu + T / L (friction comes from the scene's types
+/// and table).
+struct AFrameParams {
+  double angle = 0.349;  ///< Tilt of each brick from vertical [rad]; 0.349 is 20 degrees.
+  std::string type;
+  double start = 0.0;                                ///< Time of both placements [s].
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< The apex, seen from above [m].
+};
+
+/// Parameters of the `card_house` generator (thesis figure 10): `levels`
+/// rows of V's, `levels` V's in the lowest and one fewer in each above, a
+/// level brick laid flat across the apexes of each two neighbouring V's and
+/// a V standing on each level brick. Two level bricks on one apex cannot
+/// both lie along its middle, so each row is shifted sideways (along y) by
+/// a little more than half a brick's width from the one below: each level
+/// brick rests on half of each apex it spans.
+struct CardHouseParams {
+  int levels = 3;
+  double angle = 0.349;  ///< Tilt of each leaning brick from vertical [rad].
+  std::string type;
+  double start = 0.0;  ///< [s]
+  /// Between placements [s]: one per V (both its bricks at once) or level brick.
+  double interval = 0.0;
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the house, seen from above [m].
+};
+
 /// Appends a tower: layers alternate between bricks along x and along y, each
 /// layer resting across the ends of the one below.
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
@@ -91,6 +121,14 @@ Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary
 /// Appends a pyramid (running bond) centred on the table.
 Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
                        std::vector<ScheduledBrick>* bricks);
+
+/// Appends an inverted V on the table.
+Status generateAFrame(const AFrameParams& params, const BrickTypeLibrary& types,
+                      std::vector<ScheduledBrick>* bricks);
+
+/// Appends a card house on the table, from the lowest row up.
+Status generateCardHouse(const CardHouseParams& params, const BrickTypeLibrary& types,
+                         std::vector<ScheduledBrick>* bricks);
 
 /// Appends a pile drop.
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,

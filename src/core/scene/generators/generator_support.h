@@ -36,6 +36,10 @@ void readSlantTowerGenerator(const YAML::Node& node, const std::string& where,
                              const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readPyramidGenerator(const YAML::Node& node, const std::string& where,
                           const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readAFrameGenerator(const YAML::Node& node, const std::string& where,
+                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readCardHouseGenerator(const YAML::Node& node, const std::string& where,
+                            const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 
