@@ -1,4 +1,5 @@
 // The card house (thesis figure 10) and its element, the inverted V.
+#include <algorithm>
 #include <cmath>
 
 #include "scene/generators/generator_support.h"
