@@ -22,12 +22,6 @@ using test::kKaplaWidth;
 using test::placement;
 using test::runFor;
 
-WorldOptions comOptions() {
-  WorldOptions options;
-  options.stability.mode = "com";
-  return options;
-}
-
 double displacement(const BrickSnapshot& b) {
   return (b.pose.translation() - b.placed_pose.translation()).norm();
 }
@@ -45,7 +39,7 @@ RunReport runScene(const std::string& yaml, double duration) {
   const Status parsed = parseScene(yaml, "test", types, &scene);
   EXPECT_TRUE(parsed.ok) << parsed.message;
   RunOptions options;
-  options.world = comOptions();
+  options.world = test::optionsFor("com");
   options.duration = duration;
   RunReport report;
   const Status ran = brick_stack_sim::runScene(scene, types, options, &report);
@@ -67,7 +61,7 @@ void placeTower(BrickWorld* world, int layers) {
 /// A plank along x over the table's +x edge with its centre `overhang` [m]
 /// past it: statics says it stays iff its centre is over the table.
 BrickSnapshot plankOverEdgeAfter(double centre_past_edge, double seconds) {
-  WorldOptions options = comOptions();
+  WorldOptions options = test::optionsFor("com");
   options.table.size = Eigen::Vector2d(0.4, 0.4);
   auto world = test::makeWorld(options);
   EXPECT_TRUE(
@@ -186,7 +180,7 @@ TEST(ComStability, TwentyFiveLayerTowerBuiltBrickByBrickStandsStill) {
   const BrickTypeLibrary types = test::packageTypes();
   ASSERT_TRUE(loadScene("tower25_built", {test::dataPath("scenes")}, types, &scene).ok);
   RunOptions options;
-  options.world = comOptions();
+  options.world = test::optionsFor("com");
   options.duration = 49.0 + 30.0;  // the last brick is placed at 49 s
   RunReport report;
   ASSERT_TRUE(brick_stack_sim::runScene(scene, types, options, &report).ok);
@@ -207,7 +201,7 @@ TEST(ComStability, FourStackLowerBricksCarryTheCrossingLoadOverThemselves) {
   // (x = +-s, y of the lower plank): a lower plank's COM-above stays over its
   // own centre line (y = its y) with twice its mass. The thesis's equation 10
   // would put it at y = -s/2, outside its 23.4 mm wide footprint.
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   const double s = (kKaplaLength - kKaplaWidth) / 2, h = kKaplaThickness;
   ASSERT_TRUE(world->addBrick(placement("low_a", {0, -s, h / 2})).ok);
   ASSERT_TRUE(world->addBrick(placement("low_b", {0, s, h / 2})).ok);
@@ -229,7 +223,7 @@ TEST(ComStability, FourStackLowerBricksCarryTheCrossingLoadOverThemselves) {
 TEST(ComStability, BridgeLoadedOffCentrePassesLeverRuleShares) {
   // Two towers of two cubes at x = -a and +a; a KAPLA bridge across them,
   // centred; a half plank on the bridge at (x_h, y_h).
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   const double cube = 0.0234, a = 0.04, h = kKaplaThickness;
   const double x_h = 0.03, y_h = 0.005;
   for (double x : {-a, a}) {
@@ -277,7 +271,7 @@ TEST(ComStability, BridgeLoadedOffCentrePassesLeverRuleShares) {
 // --- wake-up ------------------------------------------------------------------
 
 TEST(ComStability, RemovingASupporterWakesExactlyTheBricksAboveIt) {
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   placeTower(world.get(), 6);
   runFor(world.get(), 1.0);
   for (const BrickSnapshot& b : world->snapshot()) ASSERT_EQ(b.state, BrickState::kStable) << b.id;
@@ -297,7 +291,7 @@ TEST(ComStability, RemovingASupporterWakesExactlyTheBricksAboveIt) {
 }
 
 TEST(ComStability, NothingAwakeMeansNoBulletStep) {
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   ASSERT_TRUE(world->addBrick(placement("a", {0, 0, kKaplaThickness / 2})).ok);
   runFor(world.get(), 0.5);
   BrickSnapshot a;
@@ -315,7 +309,7 @@ TEST(ComStability, BrickDroppedOntoAFrozenOneAtLongStepsLandsOnIt) {
   // brick under it (out of Bullet's world while nothing moved near it) must
   // be back in Bullet by then. (From 1/30 s on, plain Bullet itself lets a
   // brick sink through another: no mode can do better there.)
-  WorldOptions options = comOptions();
+  WorldOptions options = test::optionsFor("com");
   options.time_step = 1.0 / 100;
   auto world = test::makeWorld(options);
   ASSERT_TRUE(world->addBrick(placement("low", {0, 0, kKaplaThickness / 2})).ok);
@@ -333,7 +327,7 @@ TEST(ComStability, BrickDroppedOntoAFrozenOneAtLongStepsLandsOnIt) {
 
 TEST(ComStability, FastBrickBouncesOffAFrozenTowerInsteadOfPassingThrough) {
   // Thrown at 8 m/s from 2 cm beside a frozen 4-layer tower: it must hit it.
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   placeTower(world.get(), 4);
   for (const BrickSnapshot& b : world->snapshot()) ASSERT_EQ(b.state, BrickState::kStable);
   const double tower_face = -kKaplaLength / 2;  // the tower spans x in [-L/2, L/2]
@@ -355,7 +349,7 @@ TEST(ComStability, FastBrickBouncesOffAFrozenTowerInsteadOfPassingThrough) {
 }
 
 TEST(ComStability, PushingAFrozenBrickWakesItAndWhatItCarries) {
-  auto world = test::makeWorld(comOptions());
+  auto world = test::makeWorld(test::optionsFor("com"));
   ASSERT_TRUE(world->addBrick(placement("low", {0, 0, kKaplaThickness / 2})).ok);
   ASSERT_TRUE(world->addBrick(placement("high", {0, 0, 1.5 * kKaplaThickness})).ok);
   runFor(world.get(), 0.5);
