@@ -57,10 +57,22 @@ struct SupportGeometry {
     std::string supporter;  ///< Brick id, "table" or "floor".
     std::vector<Eigen::Vector3d> polygon;
   };
+  /// A force the brick receives at one contact, as the statics LP found it.
+  struct ContactForce {
+    std::string other;                                  ///< Brick id, "table" or "floor".
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< [m]
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from `other` into the brick.
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< On the brick [N].
+    double friction = 0.0;                              ///< Coulomb coefficient [-].
+  };
   std::vector<Patch> patches;
   std::vector<Eigen::Vector3d> combined_hull;  ///< At the mean support height.
   Eigen::Vector3d com_above = Eigen::Vector3d::Zero();
   double margin = 0.0;  ///< [m], < 0: the COM-above projection is outside.
+  /// Where statics was solved for it (a frozen leaning brick and what it
+  /// leans with; in mode equilibrium, any brick of a component whose LP
+  /// ran): one set of contact forces that balances it. Empty otherwise.
+  std::vector<ContactForce> contact_forces;
 };
 
 }  // namespace brick_stack_sim

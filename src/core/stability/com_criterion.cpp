@@ -239,6 +239,9 @@ void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHan
             " of a brick's weight unbalanced)"});
   }
   if (!balanced) return;
+  std::vector<std::vector<ContactForce>> forces = assembly.contactForces(solution);
+  for (std::size_t i = 0; i < group.size(); ++i)
+    graph->find(group[i])->stability.contact_forces = std::move(forces[i]);
   for (std::size_t c = 0; c < assembly.contacts().size(); ++c) {
     const BodyHandle other = assembly.otherOf(c);
     if (assembly.isFree(other)) continue;
@@ -253,6 +256,7 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
     SupportGraph::Node& node = *graph->find(handle);
     node.received.clear();
     node.pushes.clear();
+    node.stability.contact_forces.clear();
   }
   const SupportGraph::LeaningTest leans_on = [this](const SupportPatch& patch) {
     return leansOn(patch, options_);

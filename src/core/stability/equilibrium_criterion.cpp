@@ -22,6 +22,9 @@ std::vector<WakeDecision> EquilibriumCriterion::check(
   const StaticsSolution solution = assembly.solve();
   // A solver failure keeps the COM rule's answer: never freeze on no answer.
   if (!solution.solved) return by_com;
+  std::vector<std::vector<ContactForce>> forces = assembly.contactForces(solution);
+  for (std::size_t i = 0; i < component.size(); ++i)
+    graph->find(component[i])->stability.contact_forces = std::move(forces[i]);
   std::vector<WakeDecision> unstable;
   for (std::size_t i = 0; i < component.size(); ++i) {
     if (solution.imbalance[i] <= 0.0) continue;

@@ -26,6 +26,17 @@ struct SupportPatch {
   double height = 0.0;    ///< Mean z of the points [m].
 };
 
+/// A force a brick receives at one contact point, as the statics LP found
+/// it: one admissible set of contact forces that balances the brick (the LP
+/// picks one where statics leaves them undetermined).
+struct ContactForce {
+  BodyHandle other = 0;                               ///< The body pushing: a brick or the ground.
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< [m], world
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from `other` into the brick.
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< On the brick [N], world.
+  double friction = 0.0;                              ///< Coulomb coefficient of the pair [-].
+};
+
 /// What a stability model knows about one brick.
 struct BrickStability {
   bool frozen = false;
@@ -39,6 +50,9 @@ struct BrickStability {
   std::vector<SupportPatch> side_contacts;
   Polygon2d combined_hull;      ///< Hull of all support patches.
   double support_height = 0.0;  ///< Mean height of the supports [m].
+  /// Its contact forces where the last check solved statics for it (a
+  /// leaning group; any brick of a component whose LP ran); else empty.
+  std::vector<ContactForce> contact_forces;
 };
 
 /// Why a brick left the stack.

@@ -13,6 +13,7 @@ bool leansOn(const SupportPatch& side_contact, const StabilityOptions& options) 
 
 int StaticsAssembly::addFree(BodyHandle brick, double mass, const Eigen::Vector3d& com) {
   index_[brick] = static_cast<int>(bodies_.size());
+  handles_.push_back(brick);
   StaticsBody body;
   body.mass = mass;
   body.com = com;
@@ -38,6 +39,45 @@ void StaticsAssembly::addPatches(int body, const std::vector<SupportPatch>& patc
       others_.push_back(patch.supporter);
     }
   }
+}
+
+namespace {
+
+/// Adds `force` to `forces`, onto the entry for the same contact (same
+/// body, point and normal) when there is one. Two edges that touch are named
+/// from each side with that side's face normal: those stay two forces, each
+/// in its own friction cone (a rounded edge may push along either).
+void accumulate(const ContactForce& force, std::vector<ContactForce>* forces) {
+  // Far below any contact patch, far above the points' rounding [m], [-].
+  constexpr double kSamePoint = 1e-7;
+  constexpr double kSameNormal = 1e-9;
+  for (ContactForce& known : *forces) {
+    if (known.other == force.other && (known.point - force.point).norm() < kSamePoint &&
+        (known.normal - force.normal).norm() < kSameNormal) {
+      known.force += force.force;
+      return;
+    }
+  }
+  forces->push_back(force);
+}
+
+}  // namespace
+
+std::vector<std::vector<ContactForce>> StaticsAssembly::contactForces(
+    const StaticsSolution& solution) const {
+  std::vector<std::vector<ContactForce>> forces(bodies_.size());
+  if (solution.forces.size() != contacts_.size()) return forces;
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const StaticsContact& contact = contacts_[c];
+    accumulate(ContactForce{others_[c], contact.point, contact.normal, solution.forces[c],
+                            contact.friction},
+               &forces[contact.a]);
+    if (contact.b != kStaticsGround)
+      accumulate(ContactForce{handles_[contact.a], contact.point, -contact.normal,
+                              -solution.forces[c], contact.friction},
+                 &forces[contact.b]);
+  }
+  return forces;
 }
 
 StaticsSolution StaticsAssembly::solve() const {

@@ -38,9 +38,17 @@ class StaticsAssembly {
 
   StaticsSolution solve() const;
 
+  /// Per free body (in the order added): the forces it receives in
+  /// `solution`, from its own contacts and, with the opposite sign, from
+  /// those of the free bodies that touch it. A contact named from both
+  /// sides with one normal (a brick on a free brick below, and that brick's
+  /// contact with it from above) is one force.
+  std::vector<std::vector<ContactForce>> contactForces(const StaticsSolution& solution) const;
+
  private:
   StabilityOptions options_;
   std::map<BodyHandle, int> index_;
+  std::vector<BodyHandle> handles_;  ///< Of each free body.
   std::vector<StaticsBody> bodies_;
   std::vector<StaticsContact> contacts_;
   std::vector<BodyHandle> others_;

@@ -227,7 +227,8 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
     input.placed.push_back(
         {BodyMotion{brick->handle, placement.pose.translation(), brick->type.mass,
                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-         restingContacts(w, brick->handle, brick->type.friction, w.boxOf(brick->handle), low, high)});
+         restingContacts(w, brick->handle, brick->type.friction, w.boxOf(brick->handle), low,
+                         high)});
     decide(&w, input);
     if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
   }
@@ -413,6 +414,9 @@ bool BrickWorld::supportGeometry(const std::string& id, SupportGeometry* geometr
     result.combined_hull.emplace_back(corner.x(), corner.y(), stability.support_height);
   result.com_above = stability.com_above;
   result.margin = stability.margin;
+  for (const ContactForce& force : stability.contact_forces)
+    result.contact_forces.push_back(SupportGeometry::ContactForce{
+        w.nameOf(force.other), force.point, force.normal, force.force, force.friction});
   *geometry = std::move(result);
   return true;
 }

@@ -57,6 +57,16 @@ TEST(Bridge, OnTwoTowersAndAWeakThirdSupporterFreezesWithoutWaking) {
     EXPECT_EQ(test::snapshotOf(*world, p.id).state, BrickState::kStable) << p.id;
     EXPECT_EQ(test::displacement(*world, p.id), 0.0) << p.id;
   }
+  // The LP ran on the whole component: it reports the forces it found for
+  // every brick, and they hold each one (Newton, not the solver's word).
+  std::vector<std::string> ids;
+  for (const BrickPlacement& p : bridgeOnTwoTowersAndAWeakThird()) ids.push_back(p.id);
+  const test::ForceBalance balance = test::contactForceBalance(*world, ids);
+  EXPECT_EQ(balance.bricks_with_forces, static_cast<int>(ids.size()));
+  EXPECT_LT(balance.worst_force, 1e-6);
+  EXPECT_LT(balance.worst_torque, 1e-6);
+  EXPECT_LT(balance.worst_friction, 1e-6);
+  EXPECT_LT(balance.worst_pull, 1e-6);
 }
 
 TEST(Bridge, ModeComReportsWhatItsSplitDoesToTheWeakSupporter) {

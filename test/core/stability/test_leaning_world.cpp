@@ -55,6 +55,53 @@ TEST_P(StaticsInMode, VOfPlanksPlacedAtRestStandsBelowTheThresholdAndFallsAbove)
   }
 }
 
+/// Forces a frozen brick's contacts carry must hold it in equilibrium with
+/// its weight, within friction and without pulling, to the LP's tolerance.
+void expectBalanced(const test::ForceBalance& balance) {
+  constexpr double kLpTolerance = 1e-6;  // of a brick's weight; Clp's is 1e-7
+  EXPECT_LT(balance.worst_force, kLpTolerance);
+  EXPECT_LT(balance.worst_torque, kLpTolerance);
+  EXPECT_LT(balance.worst_friction, kLpTolerance);
+  EXPECT_LT(balance.worst_pull, kLpTolerance);
+}
+
+TEST_P(StaticsInMode, LeaningPlanksReportContactForcesThatHoldThem) {
+  // A V at half its threshold: each plank's forces (feet on the table, the
+  // other plank at the apex) balance its weight, force and torque, inside
+  // the friction cones; at the apex the two planks push each other with
+  // opposite forces (one contact, named from both sides).
+  auto world = worldWithFriction(GetParam(), 0.5);
+  const auto [left, right] = test::vPlanks(0.5 * test::vThresholdAngle(0.5));
+  ASSERT_TRUE(world->addBrick(at("left", left)).ok);
+  ASSERT_TRUE(world->addBrick(at("right", right)).ok);
+  test::runFor(world.get(), 0.2);
+  ASSERT_EQ(test::snapshotOf(*world, "left").state, BrickState::kLeaning);
+  const test::ForceBalance balance = test::contactForceBalance(*world, {"left", "right"});
+  EXPECT_EQ(balance.bricks_with_forces, 2);
+  expectBalanced(balance);
+
+  SupportGeometry on_left, on_right;
+  ASSERT_TRUE(world->supportGeometry("left", &on_left));
+  ASSERT_TRUE(world->supportGeometry("right", &on_right));
+  Eigen::Vector3d apex_on_left = Eigen::Vector3d::Zero(), apex_on_right = Eigen::Vector3d::Zero();
+  double table_lift = 0.0;
+  for (const SupportGeometry::ContactForce& f : on_left.contact_forces) {
+    if (f.other == "right") apex_on_left += f.force;
+    if (f.other == "table") table_lift += f.force.z();
+  }
+  for (const SupportGeometry::ContactForce& f : on_right.contact_forces) {
+    if (f.other == "left") apex_on_right += f.force;
+    if (f.other == "table") table_lift += f.force.z();
+  }
+  const double weight = test::snapshotOf(*world, "left").mass * 9.81;
+  // The planks lean on each other: the apex force is mostly horizontal,
+  // towards each plank.
+  EXPECT_GT(apex_on_left.norm(), 0.1 * weight);
+  EXPECT_LT((apex_on_left + apex_on_right).norm(), 1e-6 * weight);
+  // The table carries both planks.
+  EXPECT_NEAR(table_lift, 2.0 * weight, 1e-6 * weight);
+}
+
 TEST_P(StaticsInMode, OnePlankOfAVAloneIsNotHeld) {
   auto world = worldWithFriction(GetParam(), 0.5);
   ASSERT_TRUE(world->addBrick(at("left", test::vPlanks(0.5).first)).ok);
@@ -230,6 +277,13 @@ TEST_P(StaticsInMode, CardHousesFromTheGeneratorStandStill) {
             << b.placement.id;
         EXPECT_EQ(displacement(*world, b.placement.id), 0.0) << b.placement.id;
       }
+      // Every brick is in a leaning group (a level plank shares its V's),
+      // and the groups' forces, passed from one to the next, hold them all.
+      std::vector<std::string> ids;
+      for (const ScheduledBrick& b : house) ids.push_back(b.placement.id);
+      const test::ForceBalance balance = test::contactForceBalance(*world, ids);
+      EXPECT_EQ(balance.bricks_with_forces, static_cast<int>(ids.size()));
+      expectBalanced(balance);
     }
   }
 }
