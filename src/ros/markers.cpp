@@ -1,5 +1,6 @@
 #include "brick_stack_sim/ros/markers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "brick_stack_sim/ros/conversions.h"
@@ -76,6 +77,92 @@ bool supportHeight(const SupportGeometry& geometry, double* height) {
   return std::isfinite(*height);
 }
 
+/// Edges drawn per friction cone: as many as the statics pyramid has faces.
+constexpr int kConeEdges = 8;
+/// Forces shorter than this fraction of the brick's weight arrow are only points.
+constexpr double kLeastDrawnForce = 1e-3;
+
+bool finite(const SupportGeometry::ContactForce& f) {
+  return f.point.allFinite() && f.normal.allFinite() && f.force.allFinite() &&
+         std::isfinite(f.friction);
+}
+
+/// Any unit vector perpendicular to `direction` (unit).
+Eigen::Vector3d perpendicular(const Eigen::Vector3d& direction) {
+  const Eigen::Vector3d axis =
+      std::abs(direction.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  return direction.cross(axis).normalized();
+}
+
+void appendSegment(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                   std::vector<geometry_msgs::Point>* lines) {
+  lines->push_back(toPointMsg(from));
+  lines->push_back(toPointMsg(to));
+}
+
+/// A shaft from `tail` to `tip` and a two-barbed head at `tip`.
+void appendArrow(const Eigen::Vector3d& tail, const Eigen::Vector3d& tip,
+                 std::vector<geometry_msgs::Point>* lines) {
+  const Eigen::Vector3d along = tip - tail;
+  const double length = along.norm();
+  const Eigen::Vector3d direction = along / length;
+  const double head = std::min(0.25 * length, 0.005);
+  const Eigen::Vector3d side = 0.5 * head * perpendicular(direction);
+  appendSegment(tail, tip, lines);
+  appendSegment(tip, tip - head * direction + side, lines);
+  appendSegment(tip, tip - head * direction - side, lines);
+}
+
+/// The cone's `kConeEdges` generators from `apex` and the ring of their ends.
+void appendCone(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis, double height,
+                double friction, std::vector<geometry_msgs::Point>* lines) {
+  const Eigen::Vector3d u = perpendicular(axis);
+  const Eigen::Vector3d v = axis.cross(u);
+  std::vector<Eigen::Vector3d> rim;
+  for (int k = 0; k < kConeEdges; ++k) {
+    const double angle = 2.0 * M_PI * k / kConeEdges;
+    rim.push_back(apex + height * (axis + friction * (std::cos(angle) * u + std::sin(angle) * v)));
+  }
+  for (int k = 0; k < kConeEdges; ++k) {
+    appendSegment(apex, rim[k], lines);
+    appendSegment(rim[k], rim[(k + 1) % kConeEdges], lines);
+  }
+}
+
+/// The kLeaningMarkerNamespace markers of one brick (none without forces).
+void appendContactForces(const BrickSnapshot& brick, const SupportGeometry& geometry,
+                         const std::string& frame_id, const ros::Time& stamp,
+                         visualization_msgs::MarkerArray* array) {
+  using visualization_msgs::Marker;
+  const double scale = forceArrowScale(brick);
+  if (geometry.contact_forces.empty() || !(scale > 0.0)) return;
+  Marker points = newMarker(frame_id, stamp, kLeaningMarkerNamespace, contactPointsMarkerId(brick),
+                            Marker::SPHERE_LIST);
+  Marker arrows = newMarker(frame_id, stamp, kLeaningMarkerNamespace, forceArrowsMarkerId(brick),
+                            Marker::LINE_LIST);
+  Marker cones = newMarker(frame_id, stamp, kLeaningMarkerNamespace, frictionConesMarkerId(brick),
+                           Marker::LINE_LIST);
+  const double least = kLeastDrawnForce * kWeightArrowFraction * brick.size.maxCoeff();
+  for (const SupportGeometry::ContactForce& f : geometry.contact_forces) {
+    if (!finite(f) || f.normal.norm() < 0.5) continue;
+    points.points.push_back(toPointMsg(f.point));
+    const Eigen::Vector3d arrow = scale * f.force;
+    if (arrow.norm() < least) continue;
+    appendArrow(f.point - arrow, f.point, &arrows.points);
+    const Eigen::Vector3d normal = f.normal.normalized();
+    const double height = arrow.dot(normal);
+    if (f.friction > 0.0 && height >= least)
+      appendCone(f.point, -normal, height, f.friction, &cones.points);
+  }
+  points.scale.x = points.scale.y = points.scale.z = kContactPointSize;
+  arrows.scale.x = cones.scale.x = kForceLineWidth;  // LINE_LIST: only x, the line width
+  points.color = rgb(1.00f, 1.00f, 1.00f);           // white
+  arrows.color = rgb(0.95f, 0.10f, 0.85f);           // magenta
+  cones.color = rgb(0.10f, 0.85f, 0.95f, 0.6f);      // translucent cyan
+  for (Marker* marker : {&points, &arrows, &cones})
+    if (!marker->points.empty()) array->markers.push_back(std::move(*marker));
+}
+
 }  // namespace
 
 BrickLook brickLook(const BrickSnapshot& brick) {
@@ -115,6 +202,22 @@ int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.se
 
 int patchMarkerId(const BrickSnapshot& brick) { return 2 * static_cast<int>(brick.serial); }
 int hullMarkerId(const BrickSnapshot& brick) { return 2 * static_cast<int>(brick.serial) + 1; }
+
+int contactPointsMarkerId(const BrickSnapshot& brick) { return 3 * static_cast<int>(brick.serial); }
+int forceArrowsMarkerId(const BrickSnapshot& brick) {
+  return 3 * static_cast<int>(brick.serial) + 1;
+}
+int frictionConesMarkerId(const BrickSnapshot& brick) {
+  return 3 * static_cast<int>(brick.serial) + 2;
+}
+
+double forceArrowScale(const BrickSnapshot& brick) {
+  constexpr double kGravity = 9.81;  // [m/s^2]: a scale, not physics
+  const double weight = brick.mass * kGravity;
+  const double length = brick.size.allFinite() ? brick.size.maxCoeff() : 0.0;
+  if (!(weight > 0.0) || !std::isfinite(weight) || !(length > 0.0)) return 0.0;
+  return kWeightArrowFraction * length / weight;
+}
 
 std_msgs::ColorRGBA comAboveColor(double margin) {
   // Brighter than the box colours, so a ray inside a green stable brick stands out.
@@ -198,6 +301,7 @@ visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnap
     // an error); the DELETEALL at the head of every array removes old ones.
     if (!patches.points.empty()) array.markers.push_back(patches);
     if (!hull.points.empty()) array.markers.push_back(hull);
+    appendContactForces(brick, geometry, frame_id, stamp, &array);
   }
   return array;
 }

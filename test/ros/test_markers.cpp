@@ -1,6 +1,7 @@
 // ~markers as a pure function of snapshots and support geometry: boxes,
-// COM-above rays and contact meshes, checked against geometry computed here
-// (areas, heights) and against a real world in mode com.
+// COM-above rays, contact meshes and contact forces, checked against
+// geometry computed here (areas, heights, cone angles) and against a real
+// world in mode com.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,6 +12,8 @@
 #include "brick_stack_sim/core/geometry/polygon2d.h"
 #include "brick_stack_sim/ros/markers.h"
 #include "support/kapla.h"
+#include "support/leaning.h"
+#include "support/world_probe.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -287,6 +290,145 @@ TEST(StabilityMarkers, NoNaNReachesAMarker) {
   g.com_above = brick.pose.translation();
   g.margin = -0.01;
   EXPECT_TRUE(markersFor(g).markers.empty());
+}
+
+/// The markers of `brick` in kLeaningMarkerNamespace with id `id`, or null.
+const Marker* leaningMarker(const MarkerArray& array, int id) {
+  return findMarker(array, kLeaningMarkerNamespace, id);
+}
+
+/// Distance of `point` from the line through `apex` along `axis` (unit), and
+/// how far along it lies.
+std::pair<double, double> radialAndAxial(const Eigen::Vector3d& point, const Eigen::Vector3d& apex,
+                                         const Eigen::Vector3d& axis) {
+  const Eigen::Vector3d d = point - apex;
+  const double along = d.dot(axis);
+  return {(d - along * axis).norm(), along};
+}
+
+TEST(LeaningMarkers, ArrowsEndAtTheirContactsAndConesShowWhetherFrictionHolds) {
+  const BrickSnapshot brick = brickAt("b", 4, {0.0, 0.0, 0.05});
+  const double weight = brick.mass * 9.81;
+  // Three forces with friction 0.5: on the bottom face, inside the cone
+  // (tangential 0.2 < 0.5 x 0.5); on the side face, inside (0.04 < 0.15);
+  // on the bottom face again, outside (0.4 > 0.25).
+  const double mu = 0.5;
+  std::vector<SupportGeometry::ContactForce> forces = {{"table",
+                                                        {0.05, 0.0, 0.046},
+                                                        Eigen::Vector3d::UnitZ(),
+                                                        weight * Eigen::Vector3d(0.2, 0, 0.5),
+                                                        mu},
+                                                       {"w",
+                                                        {-0.0585, 0.0, 0.05},
+                                                        Eigen::Vector3d::UnitX(),
+                                                        weight * Eigen::Vector3d(0.3, 0, 0.04),
+                                                        mu},
+                                                       {"table",
+                                                        {-0.05, 0.0, 0.046},
+                                                        Eigen::Vector3d::UnitZ(),
+                                                        weight * Eigen::Vector3d(0.4, 0, 0.5),
+                                                        mu}};
+  SupportGeometry g;
+  g.contact_forces = forces;
+  const MarkerArray array =
+      makeStabilityMarkers({brick}, SupportGeometryMap{{"b", g}}, "world", ros::Time(1.0));
+  expectAllFinite(array);
+  EXPECT_EQ(countInNamespace(array, kLeaningMarkerNamespace), 3);
+
+  const Marker* points = leaningMarker(array, contactPointsMarkerId(brick));
+  ASSERT_NE(points, nullptr);
+  EXPECT_EQ(points->type, Marker::SPHERE_LIST);
+  ASSERT_EQ(points->points.size(), 3u);
+
+  // The weight of the brick would draw as half its length.
+  const double per_newton = 0.5 * test::kKaplaLength / weight;
+  EXPECT_NEAR(forceArrowScale(brick), per_newton, 1e-12);
+  const Marker* arrows = leaningMarker(array, forceArrowsMarkerId(brick));
+  const Marker* cones = leaningMarker(array, frictionConesMarkerId(brick));
+  ASSERT_NE(arrows, nullptr);
+  ASSERT_NE(cones, nullptr);
+  // Per force: a shaft and two barbs; per cone: 8 generators and 8 rim edges.
+  ASSERT_EQ(arrows->points.size(), 3u * 6u);
+  ASSERT_EQ(cones->points.size(), 3u * 32u);
+  for (std::size_t i = 0; i < forces.size(); ++i) {
+    SCOPED_TRACE("force " + std::to_string(i));
+    const SupportGeometry::ContactForce& f = forces[i];
+    EXPECT_LT((toEigen(points->points[i]) - f.point).norm(), 1e-12);
+    // The shaft ends at the contact, its tail is the force back from it.
+    const Eigen::Vector3d tail = toEigen(arrows->points[6 * i]);
+    const Eigen::Vector3d tip = toEigen(arrows->points[6 * i + 1]);
+    EXPECT_LT((tip - f.point).norm(), 1e-12);
+    EXPECT_LT((tip - tail - per_newton * f.force).norm(), 1e-12);
+    // Every generator leaves the contact at atan(mu) from the outward axis,
+    // and the cone is as tall as the force's normal part.
+    const Eigen::Vector3d outward = -f.normal;
+    const double height = per_newton * f.force.dot(f.normal);
+    for (std::size_t k = 0; k < 8; ++k) {
+      const Eigen::Vector3d apex = toEigen(cones->points[32 * i + 4 * k]);
+      const Eigen::Vector3d rim = toEigen(cones->points[32 * i + 4 * k + 1]);
+      EXPECT_LT((apex - f.point).norm(), 1e-12);
+      const auto [radial, axial] = radialAndAxial(rim, apex, outward);
+      EXPECT_NEAR(axial, height, 1e-12);
+      EXPECT_NEAR(radial, mu * height, 1e-12);
+    }
+    // The tail lies in the cone's base plane; inside its circle iff the
+    // force is inside the friction cone (the first two, not the third).
+    const auto [radial, axial] = radialAndAxial(tail, f.point, outward);
+    EXPECT_NEAR(axial, height, 1e-12);
+    EXPECT_EQ(radial < mu * height, i < 2);
+  }
+}
+
+TEST(LeaningMarkers, NonFiniteForcesAndMasslessBricksDrawNothing) {
+  BrickSnapshot brick = brickAt("b", 2, {0.0, 0.0, 0.05});
+  const double weight = brick.mass * 9.81;
+  SupportGeometry g;
+  g.contact_forces = {
+      {"table", {0.05, 0.0, 0.046}, Eigen::Vector3d::UnitZ(), {0.0, 0.0, weight}, 0.5},
+      {"table", {kNaN, 0.0, 0.046}, Eigen::Vector3d::UnitZ(), {0.0, 0.0, weight}, 0.5},
+      {"table", {0.0, 0.0, 0.046}, Eigen::Vector3d::UnitZ(), {0.0, kNaN, weight}, 0.5},
+      {"table", {0.0, 0.0, 0.046}, Eigen::Vector3d::UnitZ(), {0.0, 0.0, weight}, kNaN}};
+  MarkerArray array =
+      makeStabilityMarkers({brick}, SupportGeometryMap{{"b", g}}, "world", ros::Time(1.0));
+  expectAllFinite(array);
+  const Marker* points = leaningMarker(array, contactPointsMarkerId(brick));
+  ASSERT_NE(points, nullptr);
+  EXPECT_EQ(points->points.size(), 1u);  // only the finite one
+  for (const double mass : {0.0, kNaN, std::numeric_limits<double>::infinity()}) {
+    brick.mass = mass;
+    array = makeStabilityMarkers({brick}, SupportGeometryMap{{"b", g}}, "world", ros::Time(1.0));
+    expectAllFinite(array);
+    EXPECT_EQ(countInNamespace(array, kLeaningMarkerNamespace), 0) << mass;
+  }
+}
+
+TEST(LeaningMarkers, AVFromTheWorldDrawsForcesThatCarryEachPlank) {
+  // A V at half its threshold in mode com: each plank's arrows, read back
+  // as forces, add up to its weight upwards (statics of a body at rest).
+  auto world = test::worldWithFriction("com", 0.5);
+  const auto [left, right] = test::vPlanks(0.5 * test::vThresholdAngle(0.5));
+  ASSERT_TRUE(world->addBrick(test::at("left", left)).ok);
+  ASSERT_TRUE(world->addBrick(test::at("right", right)).ok);
+  test::runFor(world.get(), 0.2);
+  const std::vector<BrickSnapshot> bricks = world->snapshot();
+  SupportGeometryMap supports;
+  for (const BrickSnapshot& b : bricks) {
+    ASSERT_EQ(b.state, BrickState::kLeaning) << b.id;
+    ASSERT_TRUE(world->supportGeometry(b.id, &supports[b.id])) << b.id;
+  }
+  const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(1.0), 0.45f);
+  expectAllFinite(array);
+  for (const BrickSnapshot& b : bricks) {
+    const Marker* arrows = leaningMarker(array, forceArrowsMarkerId(b));
+    ASSERT_NE(arrows, nullptr) << b.id;
+    ASSERT_NE(leaningMarker(array, contactPointsMarkerId(b)), nullptr) << b.id;
+    ASSERT_NE(leaningMarker(array, frictionConesMarkerId(b)), nullptr) << b.id;
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i + 1 < arrows->points.size(); i += 6)
+      total += toEigen(arrows->points[i + 1]) - toEigen(arrows->points[i]);
+    const Eigen::Vector3d weight_arrow(0.0, 0.0, 0.5 * test::kKaplaLength);
+    EXPECT_LT((total - weight_arrow).norm(), 1e-6 * weight_arrow.norm()) << b.id;
+  }
 }
 
 // A two-layer tower from the real world: every brick STABLE, with the support

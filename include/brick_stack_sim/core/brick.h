@@ -62,7 +62,7 @@ struct SupportGeometry {
     std::string other;                                  ///< Brick id, "table" or "floor".
     Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< [m]
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from `other` into the brick.
-    Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< On the brick [N].
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< On the brick [N], world gravity.
     double friction = 0.0;                              ///< Coulomb coefficient [-].
   };
   std::vector<Patch> patches;

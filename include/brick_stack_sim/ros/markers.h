@@ -20,6 +20,9 @@ constexpr char kBrickMarkerNamespace[] = "bricks";
 constexpr char kComAboveMarkerNamespace[] = "com_above";
 /// Per brick: its support patches, and their combined hull.
 constexpr char kContactMeshMarkerNamespace[] = "contact_mesh";
+/// Per brick that statics solved for: its contact points, the contact
+/// forces on it as arrows and the friction cones they must stay in.
+constexpr char kLeaningMarkerNamespace[] = "leaning";
 
 /// Alpha of the brick boxes when stability markers are drawn: the COM-above
 /// rays and contact meshes lie inside the stack (a patch is the interface of
@@ -33,6 +36,15 @@ constexpr double kContactMeshLift = 1e-4;
 constexpr double kComAboveLineWidth = 0.0012;
 /// Half the arms of the cross marking the foot of a COM-above ray [m].
 constexpr double kComAboveFootSize = 0.004;
+
+/// Scale of the contact-force arrows: an arrow of this fraction of a brick's
+/// longest side is a force equal to the brick's weight (9.81 m/s^2), so the
+/// arrows of any brick type read at the brick's own size.
+constexpr double kWeightArrowFraction = 0.5;
+/// Diameter of the contact points' spheres [m].
+constexpr double kContactPointSize = 0.003;
+/// Line width of force arrows and cones [m].
+constexpr double kForceLineWidth = 0.0008;
 
 /// Support geometry per brick id, as BrickWorld::supportGeometry() gives it.
 /// Bricks the stability model does not describe are simply absent.
@@ -69,6 +81,15 @@ std_msgs::ColorRGBA comAboveColor(double margin);
 /// whole life. In kComAboveMarkerNamespace the id is brickMarkerId().
 int patchMarkerId(const BrickSnapshot& brick);
 int hullMarkerId(const BrickSnapshot& brick);
+/// Marker ids of a brick in kLeaningMarkerNamespace: three per brick, for
+/// its contact points, force arrows and friction cones.
+int contactPointsMarkerId(const BrickSnapshot& brick);
+int forceArrowsMarkerId(const BrickSnapshot& brick);
+int frictionConesMarkerId(const BrickSnapshot& brick);
+
+/// Length per newton of a brick's force arrows [m/N] (kWeightArrowFraction);
+/// 0 for a brick without mass or size.
+double forceArrowScale(const BrickSnapshot& brick);
 
 /// The stability layer's picture of every brick of `bricks` found in
 /// `supports`, in `frame_id`:
@@ -80,6 +101,16 @@ int hullMarkerId(const BrickSnapshot& brick);
 ///   fan per patch polygon of three or more vertices) and a translucent one of
 ///   the combined hull, each lifted kContactMeshLift above its polygon.
 ///   Degenerate polygons (a point or an edge) have no area and draw nothing.
+/// - kLeaningMarkerNamespace, for bricks with contact forces (frozen leaning
+///   bricks and their groups; in mode equilibrium any brick whose component
+///   statics solved): a SPHERE_LIST of the contact points; a LINE_LIST of
+///   arrows, one per force, each ending at its contact point and pointing
+///   into the brick, scaled by forceArrowScale() (the whole contact force,
+///   normal and friction, so that its place in the cone shows how close
+///   the contact is to slipping); and a LINE_LIST of the friction cones,
+///   apex at the point, opening away from the brick around the normal,
+///   each as tall as its force's normal part: an arrow whose tail lies
+///   inside its cone's base is inside the cone.
 /// Anything with a non-finite number is left out: RViz drops a whole array
 /// for one NaN. No DELETEALL: see makeMarkers().
 visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnapshot>& bricks,

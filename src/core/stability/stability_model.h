@@ -33,7 +33,8 @@ struct ContactForce {
   BodyHandle other = 0;                               ///< The body pushing: a brick or the ground.
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< [m], world
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from `other` into the brick.
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< On the brick [N], world.
+  /// On the brick [N], world, with weights in statics' g (StaticsOptions::gravity).
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
   double friction = 0.0;                              ///< Coulomb coefficient of the pair [-].
 };
 

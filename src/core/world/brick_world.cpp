@@ -7,6 +7,7 @@
 
 #include "bullet/contact_reader.h"
 #include "stability/contact_classifier.h"
+#include "stability/rigid_block_statics.h"
 #include "stability/stability_registry.h"
 #include "util/text_format.h"
 #include "world/numerical_guard.h"
@@ -414,9 +415,12 @@ bool BrickWorld::supportGeometry(const std::string& id, SupportGeometry* geometr
     result.combined_hull.emplace_back(corner.x(), corner.y(), stability.support_height);
   result.com_above = stability.com_above;
   result.margin = stability.margin;
+  // Statics balances weights in its own g; forces scale with the world's.
+  const double to_world_gravity = w.options.gravity / StaticsOptions().gravity;
   for (const ContactForce& force : stability.contact_forces)
-    result.contact_forces.push_back(SupportGeometry::ContactForce{
-        w.nameOf(force.other), force.point, force.normal, force.force, force.friction});
+    result.contact_forces.push_back(
+        SupportGeometry::ContactForce{w.nameOf(force.other), force.point, force.normal,
+                                      to_world_gravity * force.force, force.friction});
   *geometry = std::move(result);
   return true;
 }
