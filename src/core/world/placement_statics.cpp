@@ -7,6 +7,7 @@
 
 #include "stability/contact_classifier.h"
 #include "stability/rigid_block_statics.h"
+#include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
 #include "util/text_format.h"
 #include "world/placement_check.h"
@@ -19,9 +20,8 @@ std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, d
                                         const Eigen::Vector3d& high) {
   std::vector<PairContact> contacts;
   appendContacts(w, brick, friction, box, kTableHandle, true, &contacts);
-  const Eigen::AlignedBox3d reach(
-      low.array() - w.options.stability.contact_distance,
-      high.array() + w.options.stability.contact_distance);
+  const Eigen::AlignedBox3d reach(low.array() - w.options.stability.contact_distance,
+                                  high.array() + w.options.stability.contact_distance);
   std::vector<BodyHandle> near = w.dormant.near(reach.min(), reach.max());
   for (const BrickRecord* mover : w.sets.movers()) near.push_back(mover->handle);
   for (const BrickRecord* held : w.sets.held()) near.push_back(held->handle);
@@ -34,28 +34,34 @@ std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, d
 StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact>& contacts,
                           const WorldState& w) {
   StaticsVerdict verdict;
-  const std::vector<StaticsBody> bodies{StaticsBody{brick.mass, brick.com, false}};
-  std::vector<StaticsContact> statics;
   std::vector<const PairContact*> pointers;
   for (const PairContact& contact : contacts) {
     pointers.push_back(&contact);
     verdict.touching.push_back(contact.b);
-    for (const Eigen::Vector3d& point : contact.points)
-      statics.push_back(StaticsContact{0, kStaticsGround, point, contact.normal, contact.friction});
   }
   std::sort(verdict.touching.begin(), verdict.touching.end());
   verdict.touching.erase(std::unique(verdict.touching.begin(), verdict.touching.end()),
                          verdict.touching.end());
   // The COM margin of Brick.msg, on what carries it from below.
   BrickStability support;
-  support.supports =
-      supportPatches(brick, pointers, [](BodyHandle) { return true; }, w.options.stability);
+  support.supports = supportPatches(
+      brick, pointers, [](BodyHandle) { return true; }, w.options.stability,
+      &support.side_contacts);
   evaluateSupport(brick.com, &support);
   verdict.margin = support.margin;
+  // What it touches is held fixed; a brick resting on it from above is
+  // left out, as in the running models: held fixed, it could press it down
+  // with any force, where in truth it presses with its own weight at most.
+  StaticsAssembly assembly(w.options.stability);
+  assembly.addFree(brick.handle, brick.mass, brick.com);
+  assembly.addPatches(0, support.supports);
+  assembly.addPatches(0, support.side_contacts);
+  const std::vector<StaticsBody>& bodies = assembly.bodies();
+  const std::vector<StaticsContact>& statics = assembly.contacts();
 
   std::string names;
   for (BodyHandle other : verdict.touching) names += (names.empty() ? "" : ", ") + w.nameOf(other);
-  if (statics.empty()) {
+  if (verdict.touching.empty()) {
     verdict.reason = "it would touch nothing: it would fall";
     return verdict;
   }
@@ -78,8 +84,9 @@ StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact
   const Eigen::Vector3d directions[] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
                                         Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)};
   for (const Eigen::Vector3d& direction : directions) {
-    verdict.acceleration_margin = std::min(
-        verdict.acceleration_margin, horizontalAccelerationMargin(bodies, statics, direction, options));
+    verdict.acceleration_margin =
+        std::min(verdict.acceleration_margin,
+                 horizontalAccelerationMargin(bodies, statics, direction, options));
   }
   char text[64];
   std::snprintf(text, sizeof text, "%.3g m/s^2", verdict.acceleration_margin);

@@ -105,8 +105,7 @@ TEST(PlacementStatics, ALeaningPlankIsJudgedByFriction) {
   auto world = test::makeWorld(test::optionsFor("equilibrium"));
   PlacementReport report;
   BrickPlacement on_end = placement("a", {0, 0, test::kKaplaLength / 2});
-  on_end.pose.linear() =
-      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  on_end.pose.linear() = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   ASSERT_TRUE(world->evaluatePlacement(on_end, &report).ok);
   EXPECT_TRUE(report.stable) << report.reason;
   EXPECT_NEAR(report.acceleration_margin, 9.81 * kKaplaThickness / test::kKaplaLength, 1e-6);
@@ -114,11 +113,51 @@ TEST(PlacementStatics, ALeaningPlankIsJudgedByFriction) {
   leaning.pose.linear() =
       Eigen::AngleAxisd(0.3 - M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   leaning.pose.translation() = Eigen::Vector3d(
-      0.0, 0.0,
-      0.5 * (kKaplaThickness * std::sin(0.3) + test::kKaplaLength * std::cos(0.3)));
+      0.0, 0.0, 0.5 * (kKaplaThickness * std::sin(0.3) + test::kKaplaLength * std::cos(0.3)));
   ASSERT_TRUE(world->evaluatePlacement(leaning, &report).ok);
   EXPECT_FALSE(report.stable) << report.reason;
   EXPECT_EQ(report.supported_by, std::vector<std::string>{"table"});
+}
+
+TEST(PlacementStatics, AFrozenBrickAboveDoesNotHoldAQueriedBrickDown) {
+  // q along x at x = 0.7 L rests on b0 (|x| < L/2) over [0.2, 0.5] L: its
+  // COM is 0.2 L beyond b0's edge. Its other end, [0.2, 0.4] L, lies under
+  // a frozen cap across it (along y at x = 0.3 L, y = 0.45 L, on the column
+  // d0, d1 along x at y = L/2). Held down there, q would stand: about b0's
+  // edge its weight needs F (0.5 L - x_F) = m g 0.2 L, F >= 0.67 m g at
+  // x_F <= 0.2 L. The cap can give at most what its own weight holds about
+  // d1's edge at y = 0.4 L: m g 0.05 L / 0.375 L = 0.13 m g (it pivots
+  // there, q pushing it at y <= 0.025 L). q tips: a brick above holds
+  // nothing down beyond its own weight, so statics must not count on it.
+  const double L = test::kKaplaLength;
+  auto world = test::makeWorld(test::optionsFor("com"));
+  const std::vector<BrickPlacement> frozen = {
+      placement("b0", {0.0, 0.0, 0.5 * kKaplaThickness}),
+      placement("d0", {0.3 * L, 0.5 * L, 0.5 * kKaplaThickness}),
+      placement("d1", {0.3 * L, 0.5 * L, 1.5 * kKaplaThickness}),
+      placement("cap", {0.3 * L, 0.45 * L, 2.5 * kKaplaThickness}, M_PI / 2)};
+  for (const BrickPlacement& p : frozen) ASSERT_TRUE(world->addBrick(p).ok) << p.id;
+  for (const BrickPlacement& p : frozen) {
+    BrickSnapshot b;
+    ASSERT_TRUE(world->find(p.id, &b));
+    ASSERT_EQ(b.state, BrickState::kStable) << p.id;
+  }
+  const std::string before = test::fingerprint(*world);
+  PlacementReport report;
+  ASSERT_TRUE(
+      world->evaluatePlacement(placement("q", {0.7 * L, 0.0, 1.5 * kKaplaThickness}), &report).ok);
+  EXPECT_FALSE(report.stable) << report.reason;
+  EXPECT_EQ(report.state, BrickState::kDynamic);
+  // It touches both, and its COM is 0.2 L outside what carries it.
+  EXPECT_EQ(report.supported_by, (std::vector<std::string>{"b0", "cap"}));
+  EXPECT_NEAR(report.margin, -0.2 * L, 1e-6);
+  EXPECT_TRUE(test::fingerprint(*world) == before) << "a query changed the world";
+  // The control: moved back so that its COM is over b0 (x = 0.4 L), it
+  // stands, the cap still touching it from above.
+  ASSERT_TRUE(
+      world->evaluatePlacement(placement("q", {0.4 * L, 0.0, 1.5 * kKaplaThickness}), &report).ok);
+  EXPECT_TRUE(report.stable) << report.reason;
+  EXPECT_EQ(report.state, BrickState::kStable);
 }
 
 }  // namespace
