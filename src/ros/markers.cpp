@@ -77,8 +77,10 @@ bool supportHeight(const SupportGeometry& geometry, double* height) {
   return std::isfinite(*height);
 }
 
-/// Edges drawn per friction cone: as many as the statics pyramid has faces.
-constexpr int kConeEdges = 8;
+/// A friction cone is drawn as this many generators and a rim of
+/// kConeRimSegments: enough to read as a cone, few enough not to hide the arrow.
+constexpr int kConeGenerators = 4;
+constexpr int kConeRimSegments = 16;
 /// Forces shorter than this fraction of the brick's weight arrow are only points.
 constexpr double kLeastDrawnForce = 1e-3;
 
@@ -113,20 +115,64 @@ void appendArrow(const Eigen::Vector3d& tail, const Eigen::Vector3d& tip,
   appendSegment(tip, tip - head * direction - side, lines);
 }
 
-/// The cone's `kConeEdges` generators from `apex` and the ring of their ends.
+/// The cone's generators from `apex`, then its rim, `height` along `axis`.
 void appendCone(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis, double height,
                 double friction, std::vector<geometry_msgs::Point>* lines) {
   const Eigen::Vector3d u = perpendicular(axis);
   const Eigen::Vector3d v = axis.cross(u);
-  std::vector<Eigen::Vector3d> rim;
-  for (int k = 0; k < kConeEdges; ++k) {
-    const double angle = 2.0 * M_PI * k / kConeEdges;
-    rim.push_back(apex + height * (axis + friction * (std::cos(angle) * u + std::sin(angle) * v)));
+  auto rim = [&](double angle) {
+    return Eigen::Vector3d(
+        apex + height * (axis + friction * (std::cos(angle) * u + std::sin(angle) * v)));
+  };
+  for (int k = 0; k < kConeGenerators; ++k)
+    appendSegment(apex, rim(2.0 * M_PI * k / kConeGenerators), lines);
+  for (int k = 0; k < kConeRimSegments; ++k)
+    appendSegment(rim(2.0 * M_PI * k / kConeRimSegments),
+                  rim(2.0 * M_PI * (k + 1) / kConeRimSegments), lines);
+}
+
+/// One force per patch (the points a brick has with one body along one
+/// normal): their sum, at their centre of pressure (the points weighted by
+/// their normal parts; their mean when nothing presses). Four arrows and
+/// cones at the corners of one face say no more than one, and hide it.
+std::vector<SupportGeometry::ContactForce> patchResultants(
+    const std::vector<SupportGeometry::ContactForce>& forces) {
+  constexpr double kSameNormal = 1e-6;
+  struct Sum {
+    SupportGeometry::ContactForce resultant;
+    Eigen::Vector3d pressed_point = Eigen::Vector3d::Zero();
+    double pressure = 0.0;
+    Eigen::Vector3d point_sum = Eigen::Vector3d::Zero();
+    int count = 0;
+  };
+  std::vector<Sum> sums;
+  for (const SupportGeometry::ContactForce& f : forces) {
+    if (!finite(f) || f.normal.norm() < 0.5) continue;
+    const Eigen::Vector3d normal = f.normal.normalized();
+    auto same = std::find_if(sums.begin(), sums.end(), [&](const Sum& sum) {
+      return sum.resultant.other == f.other && (sum.resultant.normal - normal).norm() < kSameNormal;
+    });
+    if (same == sums.end()) {
+      sums.emplace_back();
+      same = std::prev(sums.end());
+      same->resultant = f;
+      same->resultant.normal = normal;
+      same->resultant.force.setZero();
+    }
+    const double pressure = std::max(0.0, f.force.dot(normal));
+    same->resultant.force += f.force;
+    same->pressed_point += pressure * f.point;
+    same->pressure += pressure;
+    same->point_sum += f.point;
+    ++same->count;
   }
-  for (int k = 0; k < kConeEdges; ++k) {
-    appendSegment(apex, rim[k], lines);
-    appendSegment(rim[k], rim[(k + 1) % kConeEdges], lines);
+  std::vector<SupportGeometry::ContactForce> resultants;
+  for (Sum& sum : sums) {
+    sum.resultant.point = sum.pressure > 0.0 ? Eigen::Vector3d(sum.pressed_point / sum.pressure)
+                                             : Eigen::Vector3d(sum.point_sum / sum.count);
+    resultants.push_back(sum.resultant);
   }
+  return resultants;
 }
 
 /// The kLeaningMarkerNamespace markers of one brick (none without forces).
@@ -143,22 +189,21 @@ void appendContactForces(const BrickSnapshot& brick, const SupportGeometry& geom
   Marker cones = newMarker(frame_id, stamp, kLeaningMarkerNamespace, frictionConesMarkerId(brick),
                            Marker::LINE_LIST);
   const double least = kLeastDrawnForce * kWeightArrowFraction * brick.size.maxCoeff();
-  for (const SupportGeometry::ContactForce& f : geometry.contact_forces) {
-    if (!finite(f) || f.normal.norm() < 0.5) continue;
-    points.points.push_back(toPointMsg(f.point));
+  for (const SupportGeometry::ContactForce& f : geometry.contact_forces)
+    if (finite(f) && f.normal.norm() >= 0.5) points.points.push_back(toPointMsg(f.point));
+  for (const SupportGeometry::ContactForce& f : patchResultants(geometry.contact_forces)) {
     const Eigen::Vector3d arrow = scale * f.force;
     if (arrow.norm() < least) continue;
     appendArrow(f.point - arrow, f.point, &arrows.points);
-    const Eigen::Vector3d normal = f.normal.normalized();
-    const double height = arrow.dot(normal);
+    const double height = arrow.dot(f.normal);
     if (f.friction > 0.0 && height >= least)
-      appendCone(f.point, -normal, height, f.friction, &cones.points);
+      appendCone(f.point, -f.normal, height, f.friction, &cones.points);
   }
   points.scale.x = points.scale.y = points.scale.z = kContactPointSize;
   arrows.scale.x = cones.scale.x = kForceLineWidth;  // LINE_LIST: only x, the line width
   points.color = rgb(1.00f, 1.00f, 1.00f);           // white
   arrows.color = rgb(0.95f, 0.10f, 0.85f);           // magenta
-  cones.color = rgb(0.10f, 0.85f, 0.95f, 0.6f);      // translucent cyan
+  cones.color = rgb(0.10f, 0.85f, 0.95f, 0.4f);      // translucent cyan
   for (Marker* marker : {&points, &arrows, &cones})
     if (!marker->points.empty()) array->markers.push_back(std::move(*marker));
 }

@@ -292,6 +292,13 @@ TEST(StabilityMarkers, NoNaNReachesAMarker) {
   EXPECT_TRUE(markersFor(g).markers.empty());
 }
 
+/// A contact force with friction 0.5 on the brick, from `other`.
+SupportGeometry::ContactForce contactForce(const std::string& other, const Eigen::Vector3d& point,
+                                           const Eigen::Vector3d& normal,
+                                           const Eigen::Vector3d& force, double friction = 0.5) {
+  return SupportGeometry::ContactForce{other, point, normal, force, friction};
+}
+
 /// The markers of `brick` in kLeaningMarkerNamespace with id `id`, or null.
 const Marker* leaningMarker(const MarkerArray& array, int id) {
   return findMarker(array, kLeaningMarkerNamespace, id);
@@ -309,25 +316,18 @@ std::pair<double, double> radialAndAxial(const Eigen::Vector3d& point, const Eig
 TEST(LeaningMarkers, ArrowsEndAtTheirContactsAndConesShowWhetherFrictionHolds) {
   const BrickSnapshot brick = brickAt("b", 4, {0.0, 0.0, 0.05});
   const double weight = brick.mass * 9.81;
-  // Three forces with friction 0.5: on the bottom face, inside the cone
-  // (tangential 0.2 < 0.5 x 0.5); on the side face, inside (0.04 < 0.15);
-  // on the bottom face again, outside (0.4 > 0.25).
+  // Three forces with friction 0.5, each on its own patch: on the bottom
+  // face, inside the cone (tangential 0.2 < 0.5 x 0.5); on the side face,
+  // inside (0.04 < 0.15); on the bottom face on another body, outside
+  // (0.4 > 0.25).
   const double mu = 0.5;
-  std::vector<SupportGeometry::ContactForce> forces = {{"table",
-                                                        {0.05, 0.0, 0.046},
-                                                        Eigen::Vector3d::UnitZ(),
-                                                        weight * Eigen::Vector3d(0.2, 0, 0.5),
-                                                        mu},
-                                                       {"w",
-                                                        {-0.0585, 0.0, 0.05},
-                                                        Eigen::Vector3d::UnitX(),
-                                                        weight * Eigen::Vector3d(0.3, 0, 0.04),
-                                                        mu},
-                                                       {"table",
-                                                        {-0.05, 0.0, 0.046},
-                                                        Eigen::Vector3d::UnitZ(),
-                                                        weight * Eigen::Vector3d(0.4, 0, 0.5),
-                                                        mu}};
+  const std::vector<SupportGeometry::ContactForce> forces = {
+      contactForce("table", {0.05, 0.0, 0.046}, Eigen::Vector3d::UnitZ(),
+                   weight * Eigen::Vector3d(0.2, 0, 0.5)),
+      contactForce("w", {-0.0585, 0.0, 0.05}, Eigen::Vector3d::UnitX(),
+                   weight * Eigen::Vector3d(0.3, 0, 0.04)),
+      contactForce("t2", {-0.05, 0.0, 0.046}, Eigen::Vector3d::UnitZ(),
+                   weight * Eigen::Vector3d(0.4, 0, 0.5))};
   SupportGeometry g;
   g.contact_forces = forces;
   const MarkerArray array =
@@ -340,16 +340,17 @@ TEST(LeaningMarkers, ArrowsEndAtTheirContactsAndConesShowWhetherFrictionHolds) {
   EXPECT_EQ(points->type, Marker::SPHERE_LIST);
   ASSERT_EQ(points->points.size(), 3u);
 
-  // The weight of the brick would draw as half its length.
-  const double per_newton = 0.5 * test::kKaplaLength / weight;
+  // The weight of the brick would draw as 0.3 of its length.
+  const double per_newton = 0.3 * test::kKaplaLength / weight;
   EXPECT_NEAR(forceArrowScale(brick), per_newton, 1e-12);
   const Marker* arrows = leaningMarker(array, forceArrowsMarkerId(brick));
   const Marker* cones = leaningMarker(array, frictionConesMarkerId(brick));
   ASSERT_NE(arrows, nullptr);
   ASSERT_NE(cones, nullptr);
-  // Per force: a shaft and two barbs; per cone: 8 generators and 8 rim edges.
+  // Per force: a shaft and two barbs; per cone: 4 generators and a rim of
+  // 16 segments, 20 segments in all.
   ASSERT_EQ(arrows->points.size(), 3u * 6u);
-  ASSERT_EQ(cones->points.size(), 3u * 32u);
+  ASSERT_EQ(cones->points.size(), 3u * 40u);
   for (std::size_t i = 0; i < forces.size(); ++i) {
     SCOPED_TRACE("force " + std::to_string(i));
     const SupportGeometry::ContactForce& f = forces[i];
@@ -360,16 +361,19 @@ TEST(LeaningMarkers, ArrowsEndAtTheirContactsAndConesShowWhetherFrictionHolds) {
     EXPECT_LT((tip - f.point).norm(), 1e-12);
     EXPECT_LT((tip - tail - per_newton * f.force).norm(), 1e-12);
     // Every generator leaves the contact at atan(mu) from the outward axis,
-    // and the cone is as tall as the force's normal part.
+    // and every rim point lies on the circle where the cone is as tall as
+    // the force's normal part.
     const Eigen::Vector3d outward = -f.normal;
     const double height = per_newton * f.force.dot(f.normal);
-    for (std::size_t k = 0; k < 8; ++k) {
-      const Eigen::Vector3d apex = toEigen(cones->points[32 * i + 4 * k]);
-      const Eigen::Vector3d rim = toEigen(cones->points[32 * i + 4 * k + 1]);
-      EXPECT_LT((apex - f.point).norm(), 1e-12);
-      const auto [radial, axial] = radialAndAxial(rim, apex, outward);
-      EXPECT_NEAR(axial, height, 1e-12);
-      EXPECT_NEAR(radial, mu * height, 1e-12);
+    for (std::size_t k = 0; k < 40; ++k) {
+      const Eigen::Vector3d point = toEigen(cones->points[40 * i + k]);
+      if (k < 8 && k % 2 == 0) {
+        EXPECT_LT((point - f.point).norm(), 1e-12) << k;
+        continue;
+      }
+      const auto [radial, axial] = radialAndAxial(point, f.point, outward);
+      EXPECT_NEAR(axial, height, 1e-12) << k;
+      EXPECT_NEAR(radial, mu * height, 1e-12) << k;
     }
     // The tail lies in the cone's base plane; inside its circle iff the
     // force is inside the friction cone (the first two, not the third).
@@ -377,6 +381,36 @@ TEST(LeaningMarkers, ArrowsEndAtTheirContactsAndConesShowWhetherFrictionHolds) {
     EXPECT_NEAR(axial, height, 1e-12);
     EXPECT_EQ(radial < mu * height, i < 2);
   }
+}
+
+TEST(LeaningMarkers, APatchDrawsOneArrowAtItsCentreOfPressure) {
+  // Two corners of one face on the table, pressed with 0.25 and 0.75 of the
+  // weight, with friction along x: one arrow, the sum of both, ending at
+  // the centre of pressure, a quarter of the way from the second corner to
+  // the first. A third point on the table along a tilted normal is another
+  // patch.
+  const BrickSnapshot brick = brickAt("b", 3, {0.0, 0.0, 0.05});
+  const double weight = brick.mass * 9.81;
+  const Eigen::Vector3d first(-0.04, 0.0, 0.046), second(0.04, 0.0, 0.046);
+  const Eigen::Vector3d tilted = Eigen::Vector3d(0.1, 0.0, 1.0).normalized();
+  SupportGeometry g;
+  g.contact_forces = {contactForce("table", first, Eigen::Vector3d::UnitZ(),
+                                   weight * Eigen::Vector3d(0.05, 0, 0.25)),
+                      contactForce("table", second, Eigen::Vector3d::UnitZ(),
+                                   weight * Eigen::Vector3d(0.05, 0, 0.75)),
+                      contactForce("table", {0.0, 0.01, 0.046}, tilted, 0.1 * weight * tilted)};
+  const MarkerArray array =
+      makeStabilityMarkers({brick}, SupportGeometryMap{{"b", g}}, "world", ros::Time(1.0));
+  const Marker* points = leaningMarker(array, contactPointsMarkerId(brick));
+  const Marker* arrows = leaningMarker(array, forceArrowsMarkerId(brick));
+  ASSERT_NE(points, nullptr);
+  ASSERT_NE(arrows, nullptr);
+  EXPECT_EQ(points->points.size(), 3u);  // every point is shown
+  ASSERT_EQ(arrows->points.size(), 2u * 6u);
+  const Eigen::Vector3d pressure_centre = 0.25 * first + 0.75 * second;
+  EXPECT_LT((toEigen(arrows->points[1]) - pressure_centre).norm(), 1e-12);
+  const Eigen::Vector3d drawn = toEigen(arrows->points[1]) - toEigen(arrows->points[0]);
+  EXPECT_LT((drawn - forceArrowScale(brick) * weight * Eigen::Vector3d(0.1, 0, 1.0)).norm(), 1e-12);
 }
 
 TEST(LeaningMarkers, NonFiniteForcesAndMasslessBricksDrawNothing) {
@@ -426,7 +460,7 @@ TEST(LeaningMarkers, AVFromTheWorldDrawsForcesThatCarryEachPlank) {
     Eigen::Vector3d total = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i + 1 < arrows->points.size(); i += 6)
       total += toEigen(arrows->points[i + 1]) - toEigen(arrows->points[i]);
-    const Eigen::Vector3d weight_arrow(0.0, 0.0, 0.5 * test::kKaplaLength);
+    const Eigen::Vector3d weight_arrow(0.0, 0.0, 0.3 * test::kKaplaLength);
     EXPECT_LT((total - weight_arrow).norm(), 1e-6 * weight_arrow.norm()) << b.id;
   }
 }

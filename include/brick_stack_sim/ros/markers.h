@@ -40,7 +40,7 @@ constexpr double kComAboveFootSize = 0.004;
 /// Scale of the contact-force arrows: an arrow of this fraction of a brick's
 /// longest side is a force equal to the brick's weight (9.81 m/s^2), so the
 /// arrows of any brick type read at the brick's own size.
-constexpr double kWeightArrowFraction = 0.5;
+constexpr double kWeightArrowFraction = 0.3;
 /// Diameter of the contact points' spheres [m].
 constexpr double kContactPointSize = 0.003;
 /// Line width of force arrows and cones [m].
@@ -104,12 +104,14 @@ double forceArrowScale(const BrickSnapshot& brick);
 /// - kLeaningMarkerNamespace, for bricks with contact forces (frozen leaning
 ///   bricks and their groups; in mode equilibrium any brick whose component
 ///   statics solved): a SPHERE_LIST of the contact points; a LINE_LIST of
-///   arrows, one per force, each ending at its contact point and pointing
-///   into the brick, scaled by forceArrowScale() (the whole contact force,
+///   arrows, one per patch (the points shared with one body along one
+///   normal: their resultant at its centre of pressure), each ending at
+///   that point and pointing into the brick, scaled by forceArrowScale()
+///   (the whole contact force,
 ///   normal and friction, so that its place in the cone shows how close
 ///   the contact is to slipping); and a LINE_LIST of the friction cones,
-///   apex at the point, opening away from the brick around the normal,
-///   each as tall as its force's normal part: an arrow whose tail lies
+///   apex at the point, opening away from the brick around the normal
+///   (four generators and a rim), each as tall as its force's normal part: an arrow whose tail lies
 ///   inside its cone's base is inside the cone.
 /// Anything with a non-finite number is left out: RViz drops a whole array
 /// for one NaN. No DELETEALL: see makeMarkers().
