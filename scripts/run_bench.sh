@@ -15,6 +15,11 @@ echo "Running the ${plan} benchmark into ${csv} (one row per case and setting)"
 runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_bench" "--${plan}" "${csv}")
 if command -v taskset >/dev/null; then runner=(taskset -c 0 "${runner[@]}"); fi
 "${runner[@]}"
+# The statics LP alone: time per solve against component size, cold and warm.
+lp_runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_lp_bench" "${results}/statics_lp.csv")
+if command -v taskset >/dev/null; then lp_runner=(taskset -c 0 "${lp_runner[@]}"); fi
+echo "Statics LP per solve into ${results}/statics_lp.csv"
+"${lp_runner[@]}"
 /usr/bin/python3 "${repo_root}/bench/plot_bench.py" "${csv}" "${results}"
 { echo "machine: $(nproc --all) cores (the benchmark pinned to one), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
   echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/bench_${plan}_machine.txt"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <coin/ClpSimplex.hpp>
 
@@ -93,7 +94,10 @@ class EquilibriumLp {
     }
   }
 
-  bool solve(ClpSimplex* model) const {
+  /// Solves from Clp's slack basis, or from `start` (a status per column,
+  /// then per row, as ClpSimplex::Status) when given.
+  bool solve(ClpSimplex* model, const std::vector<unsigned char>* start = nullptr,
+             int* iterations = nullptr) const {
     std::vector<double> bounds;
     rowBounds(&bounds);
     model->setLogLevel(0);
@@ -101,13 +105,26 @@ class EquilibriumLp {
                        value_.data(), column_lower_.data(), column_upper_.data(), cost_.data(),
                        bounds.data(), bounds.data());
     model->setOptimizationDirection(1.0);
+    if (start && start->size() == static_cast<std::size_t>(columnCount() + row_count_)) {
+      // Clp repairs a basis with too many or too few basic variables when it
+      // factorizes: slacks fill in, surplus columns leave.
+      model->createStatus();
+      for (int c = 0; c < columnCount(); ++c)
+        model->setColumnStatus(c, static_cast<ClpSimplex::Status>((*start)[c]));
+      for (int r = 0; r < row_count_; ++r)
+        model->setRowStatus(r, static_cast<ClpSimplex::Status>((*start)[columnCount() + r]));
+    }
     // The rows are already in units of weight and size; Clp's own scaling
     // has been seen to stop at a scaled optimum that is not one unscaled
     // (secondary status 3) on a plank over a brick.
     model->scaling(0);
     model->dual();
+    if (iterations) *iterations = model->getIterationCount();
     // Whatever the dual left unfinished, the primal finishes from its basis.
-    if (!model->isProvenOptimal() || model->secondaryStatus() != 0) model->primal(1);
+    if (!model->isProvenOptimal() || model->secondaryStatus() != 0) {
+      model->primal(1);
+      if (iterations) *iterations += model->getIterationCount();
+    }
     return model->isProvenOptimal() && model->secondaryStatus() == 0;
   }
 
@@ -182,11 +199,81 @@ std::vector<int> addContactColumns(const std::vector<StaticsContact>& contacts,
   return first_column;
 }
 
+/// Where each column and row of the LP sits in a StaticsBasis: contact
+/// columns by (contact key, edge), imbalance columns by (body key, 2 row +
+/// side), rows by (body key, row).
+class BasisNames {
+ public:
+  BasisNames(const StaticsWarmStart& warm, const EquilibriumLp& lp,
+             const std::vector<int>& first_column,
+             const std::vector<std::vector<Eigen::Vector3d>>& edges, int first_imbalance,
+             std::size_t bodies)
+      : warm_(warm),
+        lp_(lp),
+        first_column_(first_column),
+        edges_(edges),
+        first_imbalance_(first_imbalance),
+        bodies_(bodies) {}
+
+  /// The start: the basis's status of every column and row it names;
+  /// new columns at their lower bound (0), new rows' slacks basic.
+  std::vector<unsigned char> start() const {
+    std::vector<unsigned char> status(lp_.columnCount() + lp_.rowCount(),
+                                      static_cast<unsigned char>(ClpSimplex::atLowerBound));
+    for (int r = 0; r < lp_.rowCount(); ++r)
+      status[lp_.columnCount() + r] = static_cast<unsigned char>(ClpSimplex::basic);
+    visit([&](std::map<std::pair<std::uint64_t, int>, unsigned char>& names,
+              const std::pair<std::uint64_t, int>& name, int index) {
+      auto found = names.find(name);
+      if (found != names.end()) status[index] = found->second;
+    });
+    return status;
+  }
+
+  /// Replaces the basis by `model`'s final one.
+  void keep(const ClpSimplex& model) const {
+    *warm_.basis = StaticsBasis();
+    const unsigned char* status = model.statusArray();
+    visit([&](std::map<std::pair<std::uint64_t, int>, unsigned char>& names,
+              const std::pair<std::uint64_t, int>& name,
+              int index) { names[name] = status[index]; });
+  }
+
+ private:
+  template <typename Visit>
+  void visit(Visit&& name) const {
+    StaticsBasis& basis = *warm_.basis;
+    for (std::size_t c = 0; c < first_column_.size(); ++c) {
+      if (first_column_[c] < 0) continue;
+      for (std::size_t j = 0; j < edges_[c].size(); ++j)
+        name(basis.columns, {warm_.contact_keys[c], static_cast<int>(j)},
+             first_column_[c] + static_cast<int>(j));
+    }
+    for (std::size_t i = 0; i < bodies_; ++i) {
+      const int row = lp_.rowOf(static_cast<int>(i));
+      if (row < 0) continue;
+      for (int k = 0; k < 6; ++k) {
+        name(basis.rows, {warm_.body_keys[i], k}, lp_.columnCount() + row + k);
+        for (int side = 0; side < 2; ++side)
+          name(basis.imbalance, {warm_.body_keys[i], 2 * k + side},
+               first_imbalance_ + 2 * (row + k) + side);
+      }
+    }
+  }
+
+  const StaticsWarmStart& warm_;
+  const EquilibriumLp& lp_;
+  const std::vector<int>& first_column_;
+  const std::vector<std::vector<Eigen::Vector3d>>& edges_;
+  int first_imbalance_;
+  std::size_t bodies_;
+};
+
 }  // namespace
 
 StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
                              const std::vector<StaticsContact>& contacts,
-                             const StaticsOptions& options) {
+                             const StaticsOptions& options, StaticsWarmStart* warm) {
   StaticsSolution solution;
   solution.imbalance.assign(bodies.size(), 0.0);
   solution.forces.assign(contacts.size(), Eigen::Vector3d::Zero());
@@ -201,8 +288,25 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
   const int first_imbalance = lp.columnCount();
   lp.addImbalanceColumns();
 
+  const bool warm_start = warm && warm->basis && warm->body_keys.size() == bodies.size() &&
+                          warm->contact_keys.size() == contacts.size();
+  std::unique_ptr<BasisNames> names;
+  std::vector<unsigned char> start;
+  if (warm_start) {
+    names = std::make_unique<BasisNames>(*warm, lp, first_column, edges, first_imbalance,
+                                         bodies.size());
+    start = names->start();
+  }
   ClpSimplex model;
-  if (!lp.solve(&model)) {
+  const bool solved = lp.solve(&model, warm_start ? &start : nullptr, &solution.iterations);
+  if (names) {
+    if (solved) {
+      names->keep(model);
+    } else {
+      *warm->basis = StaticsBasis();  // never start from a failure's basis
+    }
+  }
+  if (!solved) {
     // With imbalance columns the LP is always feasible and bounded.
     solution.message = "the statics LP did not solve (Clp status " +
                        std::to_string(model.status()) + ", secondary " +

@@ -3,7 +3,10 @@
 // (Livesley 1978; Whiting, Ochsendorf and Durand 2009), solved with COIN-OR
 // Clp. Clp's types stay in the .cpp.
 
+#include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -52,6 +55,26 @@ struct StaticsOptions {
   double tolerance = 1e-7;
 };
 
+/// Where an LP ended (Clp's basis), under names that outlive one problem,
+/// so that the next problem over mostly the same bodies and contacts starts
+/// from there instead of from scratch: a component that grows by a brick
+/// is re-solved in a few pivots. Opaque to callers; kept by them between
+/// solves.
+struct StaticsBasis {
+  /// (contact key, cone edge), (body key, row 0..5), (body key, imbalance
+  /// column 0..11) -> ClpSimplex::Status.
+  std::map<std::pair<std::uint64_t, int>, unsigned char> columns, rows, imbalance;
+};
+
+/// Names for one problem's bodies and contacts (parallel to them), and the
+/// basis to start from and to leave the answer's basis in. Keys that
+/// collide cost pivots, never correctness: any basis is a valid start.
+struct StaticsWarmStart {
+  std::vector<std::uint64_t> body_keys;
+  std::vector<std::uint64_t> contact_keys;
+  StaticsBasis* basis = nullptr;
+};
+
 /// The answer of the statics LP.
 struct StaticsSolution {
   /// The LP solved (false: Clp failed, numbers are meaningless; `message` says why).
@@ -65,6 +88,7 @@ struct StaticsSolution {
   std::vector<double> imbalance;
   /// Per contact: the force on `a` in that solution [N], world.
   std::vector<Eigen::Vector3d> forces;
+  int iterations = 0;  ///< Simplex pivots Clp took.
   std::string message;
 };
 
@@ -72,9 +96,11 @@ struct StaticsSolution {
 /// exist that balance gravity (and `extra_acceleration`) on every free body?
 /// The LP minimises the total imbalance, so when they do not it also names
 /// the bodies left unbalanced. Contacts between two fixed bodies are ignored.
+/// With `warm`, the LP starts from `warm->basis` and leaves its own there.
 StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
                              const std::vector<StaticsContact>& contacts,
-                             const StaticsOptions& options = StaticsOptions());
+                             const StaticsOptions& options = StaticsOptions(),
+                             StaticsWarmStart* warm = nullptr);
 
 /// The largest horizontal acceleration [m/s^2] the set resists along
 /// `direction` (a horizontal unit vector) on top of gravity: how hard it may

@@ -37,6 +37,9 @@ void StaticsAssembly::addPatches(int body, const std::vector<SupportPatch>& patc
       contacts_.push_back(
           StaticsContact{body, other, patch.points[i], patch.normals[i], patch.friction});
       others_.push_back(patch.supporter);
+      // Unique in practice; a collision costs the warm start pivots only.
+      contact_keys_.push_back(((std::uint64_t{handles_[body]} << 32) | patch.supporter) ^
+                              ((i + 1) * 0x9E3779B97F4A7C15ull));
     }
   }
 }
@@ -80,10 +83,15 @@ std::vector<std::vector<ContactForce>> StaticsAssembly::contactForces(
   return forces;
 }
 
-StaticsSolution StaticsAssembly::solve() const {
+StaticsSolution StaticsAssembly::solve(StaticsBasis* basis) const {
   // Whether forces balance does not depend on g's size: the default is the
   // unit every load passed between bricks is measured in.
-  return solveStatics(bodies_, contacts_, StaticsOptions());
+  if (!basis) return solveStatics(bodies_, contacts_, StaticsOptions());
+  StaticsWarmStart warm;
+  warm.body_keys.assign(handles_.begin(), handles_.end());
+  warm.contact_keys = contact_keys_;
+  warm.basis = basis;
+  return solveStatics(bodies_, contacts_, StaticsOptions(), &warm);
 }
 
 }  // namespace brick_stack_sim

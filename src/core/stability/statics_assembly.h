@@ -36,7 +36,9 @@ class StaticsAssembly {
   /// Whether `handle` is a free body of the problem.
   bool isFree(BodyHandle handle) const { return index_.count(handle) > 0; }
 
-  StaticsSolution solve() const;
+  /// With `basis`, starts from it and leaves the answer's basis there (a
+  /// warm start: bodies and contacts are named by brick handles).
+  StaticsSolution solve(StaticsBasis* basis = nullptr) const;
 
   /// Per free body (in the order added): the forces it receives in
   /// `solution`, from its own contacts and, with the opposite sign, from
@@ -52,6 +54,7 @@ class StaticsAssembly {
   std::vector<StaticsBody> bodies_;
   std::vector<StaticsContact> contacts_;
   std::vector<BodyHandle> others_;
+  std::vector<std::uint64_t> contact_keys_;  ///< From the two handles and the point's index.
 };
 
 }  // namespace brick_stack_sim

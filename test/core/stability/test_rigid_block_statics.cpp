@@ -3,6 +3,9 @@
 // the boxes' geometry (touchingContacts), as for a brick placed at rest.
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -232,6 +235,74 @@ TEST(RigidBlockStatics, AccelerationMarginIsWhereItSlidesOrTips) {
   bodies[0].com = on_end.translation();
   EXPECT_NEAR(horizontalAccelerationMargin(bodies, standing.contacts(), Eigen::Vector3d::UnitX()),
               g * kKaplaThickness / kKaplaLength, 1e-6);
+}
+
+/// A slant tower of `layers` KAPLAs, each `offset` [m] further along x, as
+/// bodies and contacts keyed for a warm start (body i is key i; a contact
+/// by its two bodies and its index among their points).
+struct KeyedTower {
+  std::vector<StaticsBody> bodies;
+  std::vector<StaticsContact> contacts;
+  StaticsWarmStart keys;
+};
+
+KeyedTower keyedSlantTower(int layers, double offset) {
+  StaticsScene scene(0.5);
+  for (int i = 0; i < layers; ++i) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(i * offset, 0.0, (i + 0.5) * kKaplaThickness);
+    scene.add(pose);
+  }
+  KeyedTower tower;
+  tower.contacts = scene.contacts();
+  for (int i = 0; i < layers; ++i) {
+    tower.bodies.push_back(
+        StaticsBody{kKaplaMass, Eigen::Vector3d(i * offset, 0.0, (i + 0.5) * kKaplaThickness)});
+    tower.keys.body_keys.push_back(static_cast<std::uint64_t>(i));
+  }
+  std::map<std::pair<int, int>, int> seen;
+  for (const StaticsContact& c : tower.contacts) {
+    const int index = seen[{c.a, c.b}]++;
+    tower.keys.contact_keys.push_back((static_cast<std::uint64_t>(c.a + 1) << 40) ^
+                                      (static_cast<std::uint64_t>(c.b + 2) << 20) ^
+                                      static_cast<std::uint64_t>(index));
+  }
+  return tower;
+}
+
+TEST(RigidBlockStatics, AWarmStartAnswersTheSameInFewerPivots) {
+  // A 30-layer tower at 3 mm per layer stands (the COM of layers 1..29
+  // sits 45 mm past b0's centre, inside its edge at 58.5); with 45 layers
+  // the COM of layers 1..44 sits 67.5 mm out: it does not. Each is solved
+  // cold, and warm from the basis of the tower one layer lower.
+  for (const int layers : {30, 45}) {
+    SCOPED_TRACE(std::to_string(layers) + " layers");
+    StaticsBasis basis;
+    KeyedTower lower = keyedSlantTower(layers - 1, 0.003);
+    lower.keys.basis = &basis;
+    ASSERT_TRUE(solveStatics(lower.bodies, lower.contacts, StaticsOptions(), &lower.keys).solved);
+    EXPECT_FALSE(basis.columns.empty());
+
+    KeyedTower tower = keyedSlantTower(layers, 0.003);
+    const StaticsSolution cold = solveStatics(tower.bodies, tower.contacts);
+    tower.keys.basis = &basis;
+    const StaticsSolution warm =
+        solveStatics(tower.bodies, tower.contacts, StaticsOptions(), &tower.keys);
+    ASSERT_TRUE(cold.solved);
+    ASSERT_TRUE(warm.solved);
+    EXPECT_EQ(warm.feasible, layers == 30);
+    EXPECT_EQ(cold.feasible, warm.feasible);
+    // The least total imbalance is unique even where its place is not.
+    double cold_total = 0.0, warm_total = 0.0;
+    for (double v : cold.imbalance) cold_total += v;
+    for (double v : warm.imbalance) warm_total += v;
+    EXPECT_NEAR(cold_total, warm_total, 1e-6);
+    EXPECT_LT(warm.iterations, cold.iterations);
+    RecordProperty("cold_pivots_" + std::to_string(layers), cold.iterations);
+    RecordProperty("warm_pivots_" + std::to_string(layers), warm.iterations);
+    std::printf("statics LP, %d-layer slant tower: %d pivots cold, %d warm\n", layers,
+                cold.iterations, warm.iterations);
+  }
 }
 
 }  // namespace
