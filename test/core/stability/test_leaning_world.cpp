@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -344,6 +345,40 @@ TEST_P(StaticsInMode, OverhangsWithoutTheirLastCounterweightFall) {
     EXPECT_GT(tilt, 0.05) << x.size();
     EXPECT_EQ(test::snapshotOf(*world, "p0").state, BrickState::kStable);
   }
+}
+
+TEST(EquilibriumWake, ATowerPastItsCollapseLayerWakesFromTheFailingBrickOnce) {
+  // A slant tower of KAPLAs each 14 mm further along x, one every 0.25 s.
+  // With layer k placed, the COM of layers 1..k sits 14 (k + 1) / 2 mm past
+  // b0's centre, beyond its edge at L/2 = 58.5 mm from k = 8 (63 mm) on:
+  // layers 1..8 tip about b0's edge as one, and no smaller set must move
+  // (the COM of 2..8 sits 56 mm past b1's centre, inside). Statics' least
+  // imbalance is the same couple on any of them: waking only the top brick,
+  // which stands on the one under it, would freeze it again for ever.
+  auto world = test::worldWithFriction("equilibrium", 0.5);
+  SlantTowerParams params;
+  params.layers = 9;
+  params.offset = 0.014;
+  params.interval = 0.25;
+  std::vector<ScheduledBrick> tower;
+  ASSERT_TRUE(generateSlantTower(params, world->types(), &tower).ok);
+  std::size_t next = 0;
+  std::vector<SimEvent> events;
+  for (double t = 0.0; t < 3.0; t += world->options().time_step) {
+    for (; next < tower.size() && tower[next].at <= t; ++next)
+      ASSERT_TRUE(world->addBrick(tower[next].placement).ok);
+    world->step();
+    const std::vector<SimEvent> now = world->takeEvents();
+    events.insert(events.end(), now.begin(), now.end());
+  }
+  std::map<std::string, int> wakes;
+  for (const SimEvent& e : events)
+    if (e.kind == SimEventKind::kWoken) ++wakes[e.brick_id];
+  EXPECT_EQ(wakes.size(), 8u);  // b1 .. b8
+  EXPECT_EQ(wakes.count("b0"), 0u);
+  for (const auto& [id, count] : wakes) EXPECT_EQ(count, 1) << id << " woken more than once";
+  EXPECT_EQ(test::snapshotOf(*world, "b0").state, BrickState::kStable);
+  EXPECT_GT(displacement(*world, "b8"), 0.02);  // it fell
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, StaticsInMode, ::testing::Values("com", "equilibrium"));
