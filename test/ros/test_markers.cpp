@@ -292,6 +292,17 @@ TEST(StabilityMarkers, NoNaNReachesAMarker) {
   EXPECT_TRUE(markersFor(g).markers.empty());
 }
 
+/// The support geometry of every brick of `bricks`, each expected in `state`.
+SupportGeometryMap describedAs(const BrickWorld& world, const std::vector<BrickSnapshot>& bricks,
+                               BrickState state) {
+  SupportGeometryMap supports;
+  for (const BrickSnapshot& b : bricks) {
+    EXPECT_EQ(b.state, state) << b.id;
+    EXPECT_TRUE(world.supportGeometry(b.id, &supports[b.id])) << b.id;
+  }
+  return supports;
+}
+
 /// A contact force with friction 0.5 on the brick, from `other`.
 SupportGeometry::ContactForce contactForce(const std::string& other, const Eigen::Vector3d& point,
                                            const Eigen::Vector3d& normal,
@@ -445,11 +456,7 @@ TEST(LeaningMarkers, AVFromTheWorldDrawsForcesThatCarryEachPlank) {
   ASSERT_TRUE(world->addBrick(test::at("right", right)).ok);
   test::runFor(world.get(), 0.2);
   const std::vector<BrickSnapshot> bricks = world->snapshot();
-  SupportGeometryMap supports;
-  for (const BrickSnapshot& b : bricks) {
-    ASSERT_EQ(b.state, BrickState::kLeaning) << b.id;
-    ASSERT_TRUE(world->supportGeometry(b.id, &supports[b.id])) << b.id;
-  }
+  const SupportGeometryMap supports = describedAs(*world, bricks, BrickState::kLeaning);
   const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(1.0), 0.45f);
   expectAllFinite(array);
   for (const BrickSnapshot& b : bricks) {
@@ -473,11 +480,7 @@ TEST(StabilityMarkers, FrozenTowerFromTheWorld) {
   test::runFor(world.get(), 0.2);
   const std::vector<BrickSnapshot> bricks = world->snapshot();
   ASSERT_EQ(bricks.size(), 4u);
-  SupportGeometryMap supports;
-  for (const BrickSnapshot& b : bricks) {
-    ASSERT_EQ(b.state, BrickState::kStable) << b.id;
-    ASSERT_TRUE(world->supportGeometry(b.id, &supports[b.id])) << b.id;
-  }
+  const SupportGeometryMap supports = describedAs(*world, bricks, BrickState::kStable);
   const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(1.0), 0.45f);
   expectAllFinite(array);
   for (const BrickSnapshot& b : bricks) {
