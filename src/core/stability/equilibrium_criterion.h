@@ -28,8 +28,9 @@ class EquilibriumCriterion : public ComCriterion {
 
  private:
   /// Whether `brick` with everything resting or leaning on it, directly or
-  /// not, stands with every other body held fixed.
-  bool standsOnTheRest(const SupportGraph& graph, BodyHandle brick) const;
+  /// not, stands with every other body held fixed. Each check spends its
+  /// number of bricks from `budget`; false once that is spent.
+  bool standsOnTheRest(const SupportGraph& graph, BodyHandle brick, std::size_t* budget) const;
 
   /// The last component LP's basis: a structure that grows brick by brick
   /// is re-solved from it (a warm start) rather than from scratch.
