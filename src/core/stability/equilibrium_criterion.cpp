@@ -1,8 +1,5 @@
 #include "stability/equilibrium_criterion.h"
 
-#include <algorithm>
-#include <set>
-
 #include "stability/statics_assembly.h"
 #include "util/text_format.h"
 
@@ -27,27 +24,12 @@ StaticsAssembly assemble(const SupportGraph& graph, const std::vector<BodyHandle
   return assembly;
 }
 
-/// `brick` and every frozen brick that rests or leans on it, directly or
-/// not: what loses its support when it moves. Sorted.
-std::vector<BodyHandle> withWhatItHolds(const SupportGraph& graph, BodyHandle brick) {
-  std::set<BodyHandle> found{brick};
-  std::vector<BodyHandle> next{brick};
-  while (!next.empty()) {
-    const SupportGraph::Node* node = graph.find(next.back());
-    next.pop_back();
-    if (!node) continue;
-    for (const std::set<BodyHandle>* above : {&node->carries, &node->leaned_on_by})
-      for (BodyHandle upper : *above)
-        if (found.insert(upper).second) next.push_back(upper);
-  }
-  return std::vector<BodyHandle>(found.begin(), found.end());
-}
-
 }  // namespace
 
 bool EquilibriumCriterion::standsOnTheRest(const SupportGraph& graph, BodyHandle brick,
                                            std::size_t* budget) const {
-  const std::vector<BodyHandle> bricks = withWhatItHolds(graph, brick);
+  std::vector<BodyHandle> bricks;
+  for (const auto& reached : graph.withLoad(brick)) bricks.push_back(reached.first);
   // Past the budget it is taken as failing: woken, as the LP said.
   if (bricks.size() > *budget) return false;
   *budget -= bricks.size();

@@ -86,20 +86,30 @@ void SupportGraph::unlinkFromSupporters(BodyHandle brick, const Node& node) {
   }
 }
 
-std::vector<SupportGraph::Detached> SupportGraph::detachWithLoad(BodyHandle brick) {
-  std::vector<Detached> detached;
-  std::deque<std::pair<BodyHandle, BodyHandle>> queue{{brick, brick}};  // (brick, carried_by)
+std::vector<std::pair<BodyHandle, BodyHandle>> SupportGraph::withLoad(BodyHandle brick) const {
+  std::vector<std::pair<BodyHandle, BodyHandle>> found;
+  std::set<BodyHandle> seen;
+  std::deque<std::pair<BodyHandle, BodyHandle>> queue{{brick, brick}};  // (brick, reached from)
   while (!queue.empty()) {
     const auto [handle, carried_by] = queue.front();
     queue.pop_front();
+    const Node* node = find(handle);
+    if (!node || !seen.insert(handle).second) continue;  // reached through another path
+    for (BodyHandle upper : node->carries) queue.emplace_back(upper, handle);
+    for (BodyHandle leaning : node->leaned_on_by) queue.emplace_back(leaning, handle);
+    found.emplace_back(handle, carried_by);
+  }
+  return found;
+}
+
+std::vector<SupportGraph::Detached> SupportGraph::detachWithLoad(BodyHandle brick) {
+  std::vector<Detached> detached;
+  for (const auto& [handle, carried_by] : withLoad(brick)) {
     auto it = nodes_.find(handle);
-    if (it == nodes_.end()) continue;  // already detached through another path
     Node node = std::move(it->second);
     nodes_.erase(it);
     unlinkFromSupporters(handle, node);
     dirty_.erase(handle);
-    for (BodyHandle upper : node.carries) queue.emplace_back(upper, handle);
-    for (BodyHandle leaning : node.leaned_on_by) queue.emplace_back(leaning, handle);
     detached.push_back(Detached{handle, carried_by, std::move(node)});
   }
   return detached;

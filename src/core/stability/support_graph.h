@@ -3,6 +3,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "brick_stack_sim/core/geometry/load_distribution.h"
@@ -69,9 +70,13 @@ class SupportGraph {
   /// from the carrier (normals towards the brick above), joins that brick's
   /// supports. Its component is dirty.
   void addCarried(BodyHandle carrier, SupportPatch patch);
-  /// Takes `brick` and, breadth first, everything it carries or that leans
-  /// on it out of the graph, in the order they leave; their supporters that
-  /// stay are dirty (their load changed). Empty when `brick` is not in the graph.
+  /// `brick` and, breadth first, everything it carries or that leans on it,
+  /// directly or not (what loses its support when it moves), each with the
+  /// brick it was reached from (itself for `brick`). Empty when `brick` is
+  /// not in the graph.
+  std::vector<std::pair<BodyHandle, BodyHandle>> withLoad(BodyHandle brick) const;
+  /// Takes withLoad(brick) out of the graph, in that order; their
+  /// supporters that stay are dirty (their load changed).
   std::vector<Detached> detachWithLoad(BodyHandle brick);
   /// Takes `brick` alone out (it leaves the world); returns what it carried
   /// or what leaned on it, which stays in the graph without that support.
