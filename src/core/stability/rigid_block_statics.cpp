@@ -288,17 +288,16 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
   const int first_imbalance = lp.columnCount();
   lp.addImbalanceColumns();
 
-  const bool warm_start = warm && warm->basis && warm->body_keys.size() == bodies.size() &&
-                          warm->contact_keys.size() == contacts.size();
-  std::unique_ptr<BasisNames> names;
+  std::unique_ptr<BasisNames> names;  // set when warm-started
   std::vector<unsigned char> start;
-  if (warm_start) {
+  if (warm && warm->basis && warm->body_keys.size() == bodies.size() &&
+      warm->contact_keys.size() == contacts.size()) {
     names = std::make_unique<BasisNames>(*warm, lp, first_column, edges, first_imbalance,
                                          bodies.size());
     start = names->start();
   }
   ClpSimplex model;
-  const bool solved = lp.solve(&model, warm_start ? &start : nullptr, &solution.iterations);
+  const bool solved = lp.solve(&model, names ? &start : nullptr, &solution.iterations);
   if (names) {
     if (solved) {
       names->keep(model);
