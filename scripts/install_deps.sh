@@ -12,6 +12,8 @@ build_packages=(
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
   libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
   googletest libgtest-dev
+  # teleop: the RViz brick placer
+  libinteractive-markers-dev
 )
 gui_packages=(rviz xvfb imagemagick)
 bench_packages=(python3-matplotlib)
