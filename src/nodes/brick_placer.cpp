@@ -9,10 +9,13 @@ using namespace brick_stack_sim;
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "brick_placer");
+  // Held for the whole run: roscpp shuts the node (and its logging) down
+  // when the last NodeHandle goes away.
+  ros::NodeHandle private_node_handle("~");
   ParameterValue parameters;
   teleop::PlacerOptions options;
   BrickTypeLibrary types;
-  Status status = ros_adapter::readPrivateParameters(ros::NodeHandle("~"), &parameters);
+  Status status = ros_adapter::readPrivateParameters(private_node_handle, &parameters);
   if (status) status = teleop::loadPlacerOptions(parameters, &options);
   if (status) status = teleop::loadPlacerTypes(options, &types);
   if (!status) {

@@ -25,10 +25,13 @@ void onInterrupt(int /*signal_number*/) {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "keyboard_teleop", ros::init_options::NoSigintHandler);
   std::signal(SIGINT, onInterrupt);
+  // Held for the whole run: roscpp shuts the node (and its logging) down
+  // when the last NodeHandle goes away.
+  ros::NodeHandle private_node_handle("~");
   ParameterValue parameters;
   teleop::KeyboardOptions options;
   std::unique_ptr<teleop::RawTerminal> terminal;
-  Status status = ros_adapter::readPrivateParameters(ros::NodeHandle("~"), &parameters);
+  Status status = ros_adapter::readPrivateParameters(private_node_handle, &parameters);
   if (status) status = teleop::loadKeyboardOptions(parameters, &options);
   if (status) status = teleop::RawTerminal::open(STDIN_FILENO, &terminal);
   if (!status) {
