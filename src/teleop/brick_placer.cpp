@@ -22,11 +22,12 @@ using visualization_msgs::InteractiveMarkerControl;
 using visualization_msgs::InteractiveMarkerFeedback;
 using visualization_msgs::Marker;
 
-/// Translucent, so that the bricks under the ghost stay visible.
-constexpr float kGhostAlpha = 0.5f;
-/// Handle rings and arrows this much larger than the brick's longest side [-]:
-/// they must stand clear of the box to be grabbed.
-constexpr double kHandleScale = 1.4;
+/// Translucent, so that the bricks under the ghost stay visible, but opaque
+/// enough to stand out from the translucent bricks of the simulator's markers.
+constexpr float kGhostAlpha = 0.75f;
+/// Handle rings this much larger than the brick's longest side [-]: clear of
+/// the box so that they can be grabbed, small enough not to hide a tower.
+constexpr double kHandleScale = 1.1;
 /// Smallest handle size [m]: a cube's handles would be too small to grab.
 constexpr double kMinHandleSize = 0.06;
 
@@ -108,8 +109,8 @@ void BrickPlacer::showGhost() {
   box.scale.y = size.y();
   box.scale.z = size.z();
   // Blue for a brick to be placed, orange for one in hand.
-  box.color.r = holding ? 1.0f : 0.3f;
-  box.color.g = holding ? 0.55f : 0.65f;
+  box.color.r = holding ? 1.0f : 0.2f;
+  box.color.g = holding ? 0.55f : 0.6f;
   box.color.b = holding ? 0.1f : 1.0f;
   box.color.a = kGhostAlpha;
   InteractiveMarkerControl body;
