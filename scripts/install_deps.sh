@@ -15,7 +15,7 @@ build_packages=(
   # teleop: the RViz brick placer
   libinteractive-markers-dev
 )
-gui_packages=(rviz xvfb imagemagick)
+gui_packages=(rviz xvfb imagemagick libgl1-mesa-dri)
 bench_packages=(python3-matplotlib)
 
 wanted=("${build_packages[@]}")
