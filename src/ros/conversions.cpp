@@ -177,6 +177,9 @@ static_assert(StabilityEvent::FELL_OFF == static_cast<int>(SimEventKind::kFellOf
 static_assert(StabilityEvent::REMOVED == static_cast<int>(SimEventKind::kRemoved), "event kind");
 static_assert(StabilityEvent::NONFINITE == static_cast<int>(SimEventKind::kNonFinite),
               "event kind");
+static_assert(StabilityEvent::GRASPED == static_cast<int>(SimEventKind::kGrasped), "event kind");
+static_assert(StabilityEvent::RELEASED == static_cast<int>(SimEventKind::kReleased),
+              "event kind");
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

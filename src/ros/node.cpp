@@ -75,6 +75,10 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
       nh.advertiseService(kQueryPlacementService, &SimNode::queryPlacement, &self));
   self.services_.push_back(nh.advertiseService(kPauseService, &SimNode::pause, &self));
   self.services_.push_back(nh.advertiseService(kStepService, &SimNode::step, &self));
+  self.services_.push_back(nh.advertiseService(kGraspBrickService, &SimNode::graspBrick, &self));
+  self.services_.push_back(
+      nh.advertiseService(kReleaseBrickService, &SimNode::releaseBrick, &self));
+  self.held_target_subscriber_ = nh.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, &self);
 
   self.restartPacing();
   self.step_timer_ = nh.createWallTimer(ros::WallDuration(1.0 / options.step_timer_rate),
@@ -271,8 +275,7 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   return true;
 }
 
-bool SimNode::queryPlacement(QueryPlacement::Request& request,
-                             QueryPlacement::Response& response) {
+bool SimNode::queryPlacement(QueryPlacement::Request& request, QueryPlacement::Response& response) {
   BrickPlacement placement;
   placement.type = request.type;
   if (Status converted = fromMsg(request.pose, "pose", &placement.pose); !converted)
@@ -369,6 +372,10 @@ bool SimNode::pushBrick(PushBrick::Request& request, PushBrick::Response& respon
   Eigen::Vector3d point;
   if (Status converted = fromMsg(request, &impulse, &point); !converted)
     return refuse(kPushBrickService, converted, &response);
+  // An all-zero point is a message whose point nobody filled in: the centre.
+  BrickSnapshot brick;
+  if (point.isZero() && simulation_->world().find(request.id, &brick))
+    point = brick.pose.translation();
   if (Status pushed = simulation_->world().applyImpulse(request.id, impulse, point); !pushed)
     return refuse(kPushBrickService, pushed, &response);
   response.success = true;
@@ -412,6 +419,45 @@ bool SimNode::step(StepSimulation::Request& request, StepSimulation::Response& r
   response.success = true;
   response.message = "stepped " + std::to_string(request.steps) + " to " + formatTime(simTime());
   return true;
+}
+
+bool SimNode::graspBrick(GraspBrick::Request& request, GraspBrick::Response& response) {
+  if (Status grasped = simulation_->world().graspBrick(request.id); !grasped)
+    return refuse(kGraspBrickService, grasped, &response);
+  response.success = true;
+  response.message = "holding " + request.id + ": it follows ~" + kHeldTargetTopic;
+  state_dirty_ = true;
+  publishEvents();
+  return true;
+}
+
+bool SimNode::releaseBrick(ReleaseBrick::Request& request, ReleaseBrick::Response& response) {
+  Eigen::Vector3d linear, angular;
+  if (Status converted = fromMsg(request.twist.linear, "twist.linear", &linear); !converted)
+    return refuse(kReleaseBrickService, converted, &response);
+  if (Status converted = fromMsg(request.twist.angular, "twist.angular", &angular); !converted)
+    return refuse(kReleaseBrickService, converted, &response);
+  if (Status released = simulation_->world().releaseBrick(request.id, linear, angular); !released)
+    return refuse(kReleaseBrickService, released, &response);
+  response.success = true;
+  response.message = "released " + request.id;
+  state_dirty_ = true;
+  publishEvents();
+  return true;
+}
+
+void SimNode::onHeldTarget(const geometry_msgs::PoseStamped::ConstPtr& target) {
+  const std::string& frame = options_.config.publish.frame_id;
+  if (!target->header.frame_id.empty() && target->header.frame_id != frame) {
+    ROS_WARN_THROTTLE(2.0, "~%s ignored: frame '%s', expected '%s'", kHeldTargetTopic,
+                      target->header.frame_id.c_str(), frame.c_str());
+    return;
+  }
+  Eigen::Isometry3d pose;
+  Status accepted = fromMsg(target->pose, "pose", &pose);
+  if (accepted) accepted = simulation_->world().setHeldTarget(pose);
+  if (!accepted)
+    ROS_WARN_THROTTLE(2.0, "~%s ignored: %s", kHeldTargetTopic, accepted.message.c_str());
 }
 
 }  // namespace ros_adapter

@@ -14,9 +14,12 @@ enum class SimEventKind : unsigned char {
   kFellOff = 4,
   kRemoved = 5,
   kNonFinite = 6,  ///< Bullet produced NaN, Inf or a runaway speed for this brick; it was restored.
+  kGrasped = 7,    ///< Taken into a hand: kinematic, it follows the held target.
+  kReleased = 8,   ///< Let go by the hand: simulated again.
 };
 
-/// Lower-case name used in reports: spawned, frozen, woken, impact, fell_off, removed, nonfinite.
+/// Lower-case name used in reports: spawned, frozen, woken, impact, fell_off,
+/// removed, nonfinite, grasped, released.
 const char* toString(SimEventKind kind);
 
 struct SimEvent {

@@ -5,14 +5,17 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/PoseStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/QueryPlacement.h"
+#include "brick_stack_sim/ReleaseBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
@@ -30,6 +33,7 @@ constexpr char kBricksTopic[] = "bricks";
 constexpr char kEventsTopic[] = "events";
 constexpr char kMarkersTopic[] = "markers";
 constexpr char kClockTopic[] = "/clock";
+constexpr char kHeldTargetTopic[] = "held_target";
 constexpr char kPlaceBrickService[] = "place_brick";
 constexpr char kRemoveBrickService[] = "remove_brick";
 constexpr char kResetService[] = "reset";
@@ -38,6 +42,8 @@ constexpr char kPushBrickService[] = "push_brick";
 constexpr char kQueryPlacementService[] = "query_placement";
 constexpr char kPauseService[] = "pause";
 constexpr char kStepService[] = "step";
+constexpr char kGraspBrickService[] = "grasp_brick";
+constexpr char kReleaseBrickService[] = "release_brick";
 
 /// Most steps one ~step request may ask for: 1e6 steps are 1000 s of sim time
 /// at the default step, and the single-threaded node answers nothing meanwhile.
@@ -97,6 +103,12 @@ class SimNode {
   bool queryPlacement(QueryPlacement::Request& request, QueryPlacement::Response& response);
   bool pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   bool step(StepSimulation::Request& request, StepSimulation::Response& response);
+  bool graspBrick(GraspBrick::Request& request, GraspBrick::Response& response);
+  bool releaseBrick(ReleaseBrick::Request& request, ReleaseBrick::Response& response);
+
+  /// ~held_target: where the held brick goes. A target in another frame, not
+  /// finite, or with nothing held is ignored with a (throttled) warning.
+  void onHeldTarget(const geometry_msgs::PoseStamped::ConstPtr& target);
 
   /// Empties the table (scene empty) or replaces the bricks by the scene's;
   /// on failure nothing changes. `scheduled` receives the
@@ -126,6 +138,7 @@ class SimNode {
   ros::Publisher clock_publisher_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   std::vector<ros::ServiceServer> services_;
+  ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;
 };
 

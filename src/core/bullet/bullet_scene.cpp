@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"
@@ -52,6 +53,12 @@ struct BulletScene::Impl {
   const Body& body(BodyHandle handle) const { return bodies.at(handle); }
   btRigidBody& rigid(BodyHandle handle) { return *body(handle).rigid; }
   const btRigidBody& rigid(BodyHandle handle) const { return *body(handle).rigid; }
+  /// A brick's body, or the table's; null for the floor.
+  const btRigidBody* bodyOrTable(BodyHandle handle) const {
+    if (handle == kTableHandle) return table_body.get();
+    if (isGround(handle)) return nullptr;
+    return body(handle).rigid.get();
+  }
 };
 
 BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_options) {
@@ -275,6 +282,49 @@ void BulletScene::applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse
   btRigidBody& body = impl_->rigid(handle);
   body.applyImpulse(convertEigenToBt(impulse),
                     convertEigenToBt(point) - body.getCenterOfMassPosition());
+}
+
+void BulletScene::setVelocity(BodyHandle handle, const Eigen::Vector3d& linear,
+                              const Eigen::Vector3d& angular) {
+  btRigidBody& body = impl_->rigid(handle);
+  body.setLinearVelocity(convertEigenToBt(linear));
+  body.setAngularVelocity(convertEigenToBt(angular));
+}
+
+void BulletScene::moveKinematic(BodyHandle handle, const Eigen::Isometry3d& pose) {
+  // Bullet's saveKinematicState takes the velocity from the interpolation
+  // transform (where it was) to the world transform (where it goes).
+  impl_->rigid(handle).setWorldTransform(convertEigenToBt(pose));
+}
+
+void BulletScene::moveStatic(BodyHandle handle, const Eigen::Isometry3d& pose) {
+  btRigidBody& body = impl_->rigid(handle);
+  const btTransform transform = convertEigenToBt(pose);
+  body.setWorldTransform(transform);
+  body.setInterpolationWorldTransform(transform);
+  if (impl_->body(handle).in_world) impl_->world->updateSingleAabb(&body);
+}
+
+bool BulletScene::closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, BodyHandle b,
+                                ClosestPoints* points) const {
+  const btRigidBody* body_a = impl_->bodyOrTable(a);
+  const btRigidBody* body_b = impl_->bodyOrTable(b);
+  if (!body_a || !body_b) return false;
+  const auto* shape_a = static_cast<const btConvexShape*>(body_a->getCollisionShape());
+  const auto* shape_b = static_cast<const btConvexShape*>(body_b->getCollisionShape());
+  const btTransform transform_a = convertEigenToBt(pose_a);
+  const btTransform& transform_b = body_b->getWorldTransform();
+  btGjkEpaSolver2::sResults result;
+  if (!btGjkEpaSolver2::SignedDistance(shape_a, transform_a, shape_b, transform_b,
+                                       transform_b.getOrigin() - transform_a.getOrigin(), result))
+    return false;
+  // GJK measures the shapes shrunk by their margins (btBoxShape keeps its
+  // outer size and puts the margin inside): the surfaces lie a margin out.
+  // It works in a's frame: its normal (from b towards a) is a's local one.
+  points->normal = convertBtToEigen(transform_a.getBasis() * result.normal).normalized();
+  points->distance = result.distance - shape_a->getMargin() - shape_b->getMargin();
+  points->on_b = convertBtToEigen(result.witnesses[1]) + shape_b->getMargin() * points->normal;
+  return points->normal.allFinite() && std::isfinite(points->distance);
 }
 
 void BulletScene::step(double dt) {

@@ -17,6 +17,14 @@ class btCollisionDispatcher;
 
 namespace brick_stack_sim {
 
+/// Where two bodies are nearest, or deepest inside each other.
+struct ClosestPoints {
+  /// Signed distance of the surfaces [m]: < 0 when they overlap (the depth).
+  double distance = 0.0;
+  Eigen::Vector3d on_b = Eigen::Vector3d::Zero();     ///< The nearest point of b [m], world.
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from b towards a.
+};
+
 /// How Bullet treats a body.
 enum class BodyDynamics : unsigned char {
   kDynamic,    ///< Simulated: mass, velocity, gravity.
@@ -79,6 +87,21 @@ class BulletScene {
   /// Puts the body back at `pose`, at rest and without pending forces (the
   /// numerical guard's repair).
   void restoreAtRest(BodyHandle handle, const Eigen::Isometry3d& pose);
+  /// Sets the velocities of a dynamic body [m/s], [rad/s], world.
+  void setVelocity(BodyHandle handle, const Eigen::Vector3d& linear,
+                   const Eigen::Vector3d& angular);
+  /// Where a kinematic body is to be at the end of the coming step: Bullet
+  /// derives its velocity from the move, so what it pushes gets that speed.
+  void moveKinematic(BodyHandle handle, const Eigen::Isometry3d& pose);
+  /// Puts a static body (a frozen brick) at `pose` [m]; its bounds follow.
+  void moveStatic(BodyHandle handle, const Eigen::Isometry3d& pose);
+  /// The nearest points of a brick `a`, as it would be at `pose_a`, and a
+  /// brick or the table `b` where it is (GJK, or EPA when they overlap),
+  /// whether or not Bullet's world holds them. False for the floor (a plane)
+  /// or when GJK fails.
+  bool closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, BodyHandle b,
+                     ClosestPoints* points) const;
+
   /// An impulse [N s] at a world point [m].
   void applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse,
                     const Eigen::Vector3d& point);

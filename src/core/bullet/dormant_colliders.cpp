@@ -55,6 +55,15 @@ void DormantColliders::remove(BodyHandle frozen) {
   impl_->leaves.erase(found);
 }
 
+void DormantColliders::refresh(BodyHandle frozen) {
+  auto found = impl_->leaves.find(frozen);
+  if (found == impl_->leaves.end()) return;
+  Eigen::Vector3d low, high;
+  impl_->scene->bounds(frozen, &low, &high);
+  btDbvtVolume volume = btDbvtVolume::FromMM(convertEigenToBt(low), convertEigenToBt(high));
+  impl_->tree.update(found->second.node, volume);
+}
+
 bool DormantColliders::contains(BodyHandle handle) const { return impl_->leaves.count(handle) > 0; }
 
 std::size_t DormantColliders::size() const { return impl_->leaves.size(); }

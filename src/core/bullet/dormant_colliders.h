@@ -40,6 +40,8 @@ class DormantColliders {
   void add(BodyHandle frozen);
   /// It stops being a frozen collider: out of the tree and of Bullet's world.
   void remove(BodyHandle frozen);
+  /// A frozen brick was moved (an impact slid it): its box in the tree follows.
+  void refresh(BodyHandle frozen);
   bool contains(BodyHandle handle) const;
   std::size_t size() const;
   /// The frozen bricks currently in Bullet's world, in the order they came in.

@@ -35,7 +35,7 @@ struct ContactForce {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< Unit, from `other` into the brick.
   /// On the brick [N], world, with weights in statics' g (StaticsOptions::gravity).
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  double friction = 0.0;                              ///< Coulomb coefficient of the pair [-].
+  double friction = 0.0;  ///< Coulomb coefficient of the pair [-].
 };
 
 /// What a stability model knows about one brick.
@@ -62,6 +62,7 @@ enum class WakeCause {
   kCarried,           ///< It rests (directly or not) on a brick that was woken.
   kSupporterRemoved,  ///< A brick under it was removed.
   kPushed,            ///< An impulse was applied to it.
+  kStruck,            ///< A moving or held brick struck it hard enough to move it.
   kSupportCycle,      ///< Contacts made a cycle in the support graph (no order of loads).
 };
 
@@ -107,13 +108,44 @@ struct StabilityInput {
   const std::vector<PairContact>* contacts = nullptr;
   std::vector<RestingPlacement> placed;  ///< Bricks just placed at rest.
   std::vector<BodyHandle> removed;       ///< Bricks that left the world.
-  std::vector<BodyHandle> pushed;        ///< Bricks pushed from outside.
+  /// Bricks taken into a hand (grasped): out of the stack, still in the world.
+  std::vector<BodyHandle> grasped;
+  std::vector<BodyHandle> pushed;  ///< Bricks pushed from outside.
+  /// Frozen bricks an impact slid to a new pose, with their contacts there
+  /// (from geometry): they rest anew, and what they carry rests on them anew.
+  std::vector<RestingPlacement> slid;
 };
 
-/// A moving brick that may reach a frozen one within the coming Bullet step.
-struct Approach {
-  BodyMotion mover;
-  BodyHandle frozen = 0;
+/// A moving or held brick about to strike a frozen one within the coming
+/// Bullet step: seen before Bullet's solver would bounce it off a static
+/// collider.
+struct Impact {
+  BodyHandle striker = 0;
+  /// [kg]; infinite for a held brick (a hand does not give way).
+  double striker_mass = 0.0;
+  BodyHandle struck = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< Where they meet [m], world.
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< Unit, from struck towards striker.
+  double closing_speed = 0.0;                         ///< Along the normal [m/s], > 0.
+  double restitution = 0.0;                           ///< Of the pair [-].
+  double gravity = 9.81;                              ///< [m/s^2]
+};
+
+/// What a model makes of an impact.
+struct ImpactResponse {
+  enum class Outcome : unsigned char {
+    kAbsorbed,  ///< Nothing moves: the struck brick stays frozen where it is.
+    kWoken,     ///< The struck brick (and what must move with it) is woken.
+    kSlid,      ///< The struck brick slides under its load by `slide`, still frozen.
+  };
+  Impact impact;
+  Outcome outcome = Outcome::kAbsorbed;
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< On the struck brick [N s].
+  Eigen::Vector3d slide = Eigen::Vector3d::Zero();    ///< Of the struck brick [m], for kSlid.
+  /// The sideways blow's energy in the struck brick [J]: 0 for a blow from
+  /// above or below (a brick landing on the stack).
+  double delivered_energy = 0.0;
+  std::string reason;  ///< With the energies, for ~events.
 };
 
 /// Would a brick at rest here join the stack, and would the stack under it
@@ -137,14 +169,19 @@ class StabilityModel {
  public:
   virtual ~StabilityModel() = default;
 
-  /// Whether beforeBulletStep() wants the approaches; the world skips
-  /// gathering them for a model that does not.
-  virtual bool watchesApproaches() const { return false; }
-  /// Before Bullet advances the movers: the pairs of a mover and a frozen
-  /// brick it may reach within this step, seen before Bullet's solver would
-  /// bounce the mover off a static collider (impacts). Nothing by default.
-  virtual void beforeBulletStep(double /*dt*/, const std::vector<Approach>& /*approaches*/,
-                                StabilityDecisions* /*decisions*/) {}
+  /// Whether judgeImpacts() wants the impacts; the world skips finding
+  /// them for a model that does not.
+  virtual bool judgesImpacts() const { return false; }
+  /// Before Bullet advances the movers: what each impact on a frozen brick
+  /// does (a response per impact, in order), with the wake decisions it
+  /// takes. Everything absorbed by default.
+  virtual void judgeImpacts(const std::vector<Impact>& impacts,
+                            std::vector<ImpactResponse>* responses,
+                            StabilityDecisions* /*decisions*/) {
+    for (const Impact& impact : impacts) responses->push_back({impact, {}, {}, {}, {}, {}});
+  }
+  /// Frozen bricks resting on `brick` (empty when it is not frozen).
+  virtual std::vector<BodyHandle> carriedBy(BodyHandle /*brick*/) const { return {}; }
 
   /// Whether the model judges bricks that lean (contacts away from
   /// vertical); the world finds such contacts from geometry for a brick

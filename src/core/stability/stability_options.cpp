@@ -18,6 +18,8 @@ Status validate(const StabilityOptions& s) {
     return bad("rest_angular_speed", s.rest_angular_speed, "must be > 0 rad/s");
   if (!nonNegative(s.rest_time)) return bad("rest_time", s.rest_time, "must be >= 0 s");
   if (!positive(s.impact_speed)) return bad("impact_speed", s.impact_speed, "must be > 0 m/s");
+  if (!positive(s.impact_min_slide) || s.impact_min_slide > 0.1)
+    return bad("impact_min_slide", s.impact_min_slide, "must be in (0, 0.1] m");
   if (!positive(s.support_normal_tolerance) || s.support_normal_tolerance >= M_PI / 2)
     return bad("support_normal_tolerance", s.support_normal_tolerance, "must be in (0, pi/2) rad");
   if (!nonNegative(s.flush_angle) || s.flush_angle > 0.1)
@@ -36,6 +38,7 @@ Status readStabilityOptions(OptionsReader& reader, StabilityOptions* options) {
     reader.read("rest_angular_speed", &stability.rest_angular_speed);
     reader.read("rest_time", &stability.rest_time);
     reader.read("impact_speed", &stability.impact_speed);
+    reader.read("impact_min_slide", &stability.impact_min_slide);
     reader.read("support_normal_tolerance", &stability.support_normal_tolerance);
     reader.read("flush_angle", &stability.flush_angle);
     reader.read("contact_distance", &stability.contact_distance);

@@ -1,8 +1,12 @@
 #include "stability/stack_stability_model.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "stability/contact_classifier.h"
+#include "stability/impact_rule.h"
 #include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
 #include "util/text_format.h"
@@ -37,7 +41,9 @@ StackStabilityModel::StackStabilityModel(const StabilityOptions& options, BodyNa
 void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions* decisions) {
   // Bullet has moved them: what was placed at rest is no longer where it was.
   if (input.dt > 0.0) unjudged_.clear();
-  for (BodyHandle removed : input.removed) forget(removed, decisions);
+  for (BodyHandle removed : input.removed) forget(removed, "removed", decisions);
+  for (BodyHandle grasped : input.grasped) forget(grasped, "grasped", decisions);
+  for (const RestingPlacement& slid : input.slid) slide(slid, decisions);
   for (BodyHandle pushed : input.pushed) {
     if (graph_.contains(pushed))
       wakeWithLoad(WakeDecision{pushed, WakeCause::kPushed, pushed, 0.0, "pushed"}, &graph_, &rest_,
@@ -48,14 +54,100 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
   settle(&graph_, &rest_, decisions);
 }
 
-void StackStabilityModel::forget(BodyHandle brick, StabilityDecisions* decisions) {
+void StackStabilityModel::forget(BodyHandle brick, const char* what_happened,
+                                 StabilityDecisions* decisions) {
   rest_.erase(brick);
   unjudged_.erase(brick);
   for (BodyHandle upper : graph_.erase(brick)) {
     wakeWithLoad(WakeDecision{upper, WakeCause::kSupporterRemoved, brick, 0.0,
-                              "its supporter " + name_of_(brick) + " was removed"},
+                              "its supporter " + name_of_(brick) + " was " + what_happened},
                  &graph_, &rest_, decisions);
   }
+}
+
+void StackStabilityModel::slide(const RestingPlacement& slid, StabilityDecisions* decisions) {
+  const SupportGraph::Node* node = graph_.find(slid.brick.handle);
+  if (!node) return;
+  const BrickState was = node->leaning ? BrickState::kLeaning : BrickState::kStable;
+  graph_.eraseAndUnlink(slid.brick.handle);
+  const ContactIndex index(&slid.contacts);
+  BrickStability stability;
+  stability.mass_above = slid.brick.mass;
+  FreezeDecision decision;
+  if (evaluateMover(slid.brick, index.of(slid.brick.handle), &stability, &decision)) {
+    join(&graph_, slid.brick, decision.kind == BrickState::kLeaning, std::move(stability),
+         options_);
+    if (decision.kind != was) decisions->freeze.push_back(std::move(decision));
+    return;
+  }
+  // What it carried lost it as a support; settle() judges them next.
+  RestTracker::Mover& mover = rest_.restart(slid.brick.handle);
+  mover.stability = stability;
+  decisions->wake.push_back(WakeDecision{slid.brick.handle, WakeCause::kStruck, slid.brick.handle,
+                                         stability.margin,
+                                         "an impact slid it to where it does not rest (margin " +
+                                             millimetres(stability.margin) + ")"});
+}
+
+void StackStabilityModel::judgeImpacts(const std::vector<Impact>& impacts,
+                                       std::vector<ImpactResponse>* responses,
+                                       StabilityDecisions* decisions) {
+  for (const Impact& impact : impacts) {
+    ImpactResponse response;
+    response.impact = impact;
+    const SupportGraph::Node* node = graph_.find(impact.struck);
+    if (!node) {  // woken by an earlier impact of this step: Bullet's now
+      responses->push_back(std::move(response));
+      continue;
+    }
+    StruckBrick struck;
+    struck.mass = node->mass;
+    struck.mass_above = node->stability.mass_above;
+    struck.com_above = node->stability.com_above;
+    struck.support_hull = node->stability.combined_hull;
+    struck.support_height = node->stability.support_height;
+    struck.friction = std::numeric_limits<double>::infinity();
+    for (const auto* patches : {&node->supports, &node->side_contacts})
+      for (const SupportPatch& patch : *patches)
+        struck.friction = std::min(struck.friction, patch.friction);
+    if (!std::isfinite(struck.friction)) struck.friction = 0.0;
+    const Blow blow{impact.point,        impact.normal,      impact.closing_speed,
+                    impact.striker_mass, impact.restitution, impact.gravity};
+    const ImpactJudgement judgement = judgeImpact(struck, blow, options_.impact_min_slide);
+    response.impulse = judgement.impulse;
+    response.delivered_energy = judgement.delivered_energy;
+    const bool held = !std::isfinite(impact.striker_mass);
+    std::ostringstream speed;
+    speed.precision(3);
+    speed << impact.closing_speed;
+    const std::string blow_text = std::string(held ? "pushed by held " : "struck by ") +
+                                  name_of_(impact.striker) + " at " + speed.str() +
+                                  " m/s: " + describeImpact(judgement);
+    if (!judgement.moves()) {
+      response.outcome = ImpactResponse::Outcome::kAbsorbed;
+      response.reason = blow_text + "; absorbed";
+    } else if (judgement.tips || node->carries.empty()) {
+      // Nothing rests on it (or all of it tips): Bullet carries the blow on.
+      response.outcome = ImpactResponse::Outcome::kWoken;
+      response.reason = blow_text + (judgement.tips ? "; tips with its load" : "; woken");
+      wakeWithLoad(WakeDecision{impact.struck, WakeCause::kStruck, impact.striker,
+                                node->stability.margin, response.reason},
+                   &graph_, &rest_, decisions);
+    } else {
+      // Under a load it slides in place: the deformation stays in the
+      // struck brick (thesis 4.2), and what it carries is judged again.
+      response.outcome = ImpactResponse::Outcome::kSlid;
+      response.slide = judgement.slide * judgement.push_direction;
+      response.reason = blow_text + "; slides under its load";
+    }
+    responses->push_back(std::move(response));
+  }
+}
+
+std::vector<BodyHandle> StackStabilityModel::carriedBy(BodyHandle brick) const {
+  const SupportGraph::Node* node = graph_.find(brick);
+  if (!node) return {};
+  return std::vector<BodyHandle>(node->carries.begin(), node->carries.end());
 }
 
 bool StackStabilityModel::evaluateMover(const BodyMotion& body,

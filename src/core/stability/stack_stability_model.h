@@ -23,14 +23,22 @@ class StackStabilityModel : public StabilityModel {
                       std::unique_ptr<StabilityCriterion> criterion);
 
   bool judgesLeaning() const override { return criterion_->usesSideContacts(); }
+  bool judgesImpacts() const override { return true; }
+  void judgeImpacts(const std::vector<Impact>& impacts, std::vector<ImpactResponse>* responses,
+                    StabilityDecisions* decisions) override;
+  std::vector<BodyHandle> carriedBy(BodyHandle brick) const override;
   void decide(const StabilityInput& input, StabilityDecisions* decisions) override;
   PlacementEvaluation evaluatePlacement(const BodyMotion& brick,
                                         const std::vector<PairContact>& contacts) const override;
   bool describe(BodyHandle brick, BrickStability* stability) const override;
 
  private:
-  /// A brick left the world: what it carried wakes.
-  void forget(BodyHandle brick, StabilityDecisions* decisions);
+  /// A brick left the stack (`what_happened`: "removed", "grasped"): what
+  /// it carried wakes.
+  void forget(BodyHandle brick, const char* what_happened, StabilityDecisions* decisions);
+  /// A frozen brick an impact slid rests anew where it is now, or wakes
+  /// when it does not rest there; what it carried is judged again.
+  void slide(const RestingPlacement& slid, StabilityDecisions* decisions);
   /// A brick placed at rest joins at once when the criterion admits it,
   /// alone or with the bricks placed at rest at the same instant that it
   /// touches (Bullet cannot hold a V for one step: it is judged now or never).

@@ -126,6 +126,25 @@ std::set<BodyHandle> SupportGraph::erase(BodyHandle brick) {
   return carried;
 }
 
+std::set<BodyHandle> SupportGraph::eraseAndUnlink(BodyHandle brick) {
+  const std::set<BodyHandle> neighbours = erase(brick);
+  const auto touches_brick = [brick](const SupportPatch& patch) {
+    return patch.supporter == brick;
+  };
+  for (BodyHandle neighbour : neighbours) {
+    auto found = nodes_.find(neighbour);
+    if (found == nodes_.end()) continue;
+    Node& node = found->second;
+    node.supports.erase(std::remove_if(node.supports.begin(), node.supports.end(), touches_brick),
+                        node.supports.end());
+    node.side_contacts.erase(
+        std::remove_if(node.side_contacts.begin(), node.side_contacts.end(), touches_brick),
+        node.side_contacts.end());
+    dirty_.insert(neighbour);
+  }
+  return neighbours;
+}
+
 std::vector<BodyHandle> SupportGraph::componentOf(BodyHandle start,
                                                   std::set<BodyHandle>* seen) const {
   std::vector<BodyHandle> component;

@@ -82,6 +82,11 @@ class SupportGraph {
   /// or what leaned on it, which stays in the graph without that support.
   std::set<BodyHandle> erase(BodyHandle brick);
 
+  /// Takes `brick` alone out to put it back where it moved (an impact slid
+  /// it): what it carried or what leaned on it stays, forgets its contacts
+  /// with it and is dirty. Returns those bricks.
+  std::set<BodyHandle> eraseAndUnlink(BodyHandle brick);
+
   bool hasChanges() const { return !dirty_.empty(); }
   /// The components holding a brick that changed since the last call, each
   /// in handle order; forgets the changes.

@@ -41,6 +41,14 @@ inline std::string newtons(double force) {
   return text.str();
 }
 
+/// An energy [J], written in millijoules: "1.49 mJ".
+inline std::string millijoules(double joules) {
+  std::ostringstream text;
+  text.precision(3);
+  text << joules * 1000.0 << " mJ";
+  return text.str();
+}
+
 /// "a, b, c".
 inline std::string joinNames(const std::vector<std::string>& names) {
   std::string text;

@@ -41,6 +41,8 @@ struct BrickRecord {
   BrickMode mode = BrickMode::kDynamic;  ///< Changed by BrickSets::transfer only.
   /// The last pose known to be finite, restored if Bullet ever produces NaN.
   Eigen::Isometry3d last_good_pose = Eigen::Isometry3d::Identity();
+  /// In mode kHeld: where the hand takes it, at a bounded speed.
+  Eigen::Isometry3d held_target = Eigen::Isometry3d::Identity();
 };
 
 }  // namespace brick_stack_sim

@@ -10,6 +10,8 @@
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_registry.h"
 #include "util/text_format.h"
+#include "world/held_bricks.h"
+#include "world/impacts.h"
 #include "world/numerical_guard.h"
 #include "world/placement_check.h"
 #include "world/placement_statics.h"
@@ -44,42 +46,10 @@ constexpr double kTouchingReach = 1e-3;
 /// much nearer than a mover's reach [m].
 constexpr double kColliderMargin = 1e-3;
 
-// --- the decision path: every call of the model goes through decide() -------
-
-void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
-  if (decisions.empty()) return;
-  // Contacts read before bodies changed hands would name bricks that moved
-  // in or out of Bullet's world; the next Bullet step reads them afresh.
-  w->contacts.clear();
-  w->model_changed = true;
-  for (const FreezeDecision& d : decisions.freeze) {
-    BrickRecord* brick = w->bricks.find(d.brick);
-    if (!brick) continue;
-    w->sets.transfer(brick, frozenMode(d.kind));
-    w->emit(SimEventKind::kFrozen, brick->id, d.reason);
-  }
-  for (const WakeDecision& d : decisions.wake) {
-    BrickRecord* brick = w->bricks.find(d.brick);
-    if (!brick) continue;
-    w->sets.transfer(brick, BrickMode::kDynamic);
-    w->emit(SimEventKind::kWoken, brick->id, d.reason);
-  }
-}
-
-/// Hands `input` to the model and applies what it decides; returns the
-/// decisions (empty without a model).
-StabilityDecisions decide(WorldState* w, const StabilityInput& input) {
-  StabilityDecisions decisions;
-  if (!w->model) return decisions;
-  w->model->decide(input, &decisions);
-  applyDecisions(w, decisions);
-  return decisions;
-}
-
 // --- the stages of a step ------------------------------------------------------
 
 /// Frozen bricks that movers may reach within this step come into Bullet's
-/// world, and the model sees the approaches before Bullet resolves them.
+/// world, and the model judges the blows before Bullet resolves them.
 void prepareFrozenColliders(WorldState* w) {
   // How far a mover can get within this step. Its own speed is not enough:
   // gravity adds g dt during the step, and a collision inside the step can
@@ -97,18 +67,13 @@ void prepareFrozenColliders(WorldState* w) {
   for (const BrickRecord* mover : w->sets.movers()) reaches.push_back({mover->handle, travel});
   const std::vector<ColliderApproach> near = w->dormant.bringWithinReach(reaches, w->cost.steps);
   w->dormant.sendBackIdle(w->cost.steps);
-  if (near.empty() || !w->model->watchesApproaches()) return;
-  std::vector<Approach> approaches;
-  for (const ColliderApproach& pair : near)
-    approaches.push_back({w->motionOf(*w->bricks.find(pair.mover)), pair.frozen});
-  StabilityDecisions decisions;
-  w->model->beforeBulletStep(dt, approaches, &decisions);
-  applyDecisions(w, decisions);
+  strikeFrozenBricks(w, near);
 }
 
 /// Stage 1: Bullet advances the awake bricks; the guard repairs NaN and
 /// runaway speeds and marks bricks that fell off.
 void advanceBullet(WorldState* w, const StepContext& step) {
+  moveHeldBricks(w);
   if (w->model) prepareFrozenColliders(w);
   w->scene.step(w->options.time_step);
   ++w->cost.bullet_steps;
@@ -149,6 +114,38 @@ void runStabilityModel(WorldState* w) {
 
 }  // namespace
 
+// --- the decision path: every call of the model goes through decide() -------
+
+void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
+  if (decisions.empty()) return;
+  // Contacts read before bodies changed hands would name bricks that moved
+  // in or out of Bullet's world; the next Bullet step reads them afresh.
+  w->contacts.clear();
+  w->model_changed = true;
+  for (const FreezeDecision& d : decisions.freeze) {
+    BrickRecord* brick = w->bricks.find(d.brick);
+    if (!brick) continue;
+    w->sets.transfer(brick, frozenMode(d.kind));
+    w->emit(SimEventKind::kFrozen, brick->id, d.reason);
+  }
+  for (const WakeDecision& d : decisions.wake) {
+    BrickRecord* brick = w->bricks.find(d.brick);
+    if (!brick) continue;
+    w->sets.transfer(brick, BrickMode::kDynamic);
+    w->emit(SimEventKind::kWoken, brick->id, d.reason);
+  }
+}
+
+/// Hands `input` to the model and applies what it decides; returns the
+/// decisions (empty without a model).
+StabilityDecisions decide(WorldState* w, const StabilityInput& input) {
+  StabilityDecisions decisions;
+  if (!w->model) return decisions;
+  w->model->decide(input, &decisions);
+  applyDecisions(w, decisions);
+  return decisions;
+}
+
 // --- step ------------------------------------------------------------------------
 
 void BrickWorld::step() {
@@ -159,7 +156,8 @@ void BrickWorld::step() {
   w.placed_at_rest.clear();
   // Plain Bullet (mode none) is the baseline and always steps; with a model,
   // a world where nothing is awake has nothing for Bullet to do.
-  step.advance_bullet = !w.model || step.awake > 0;
+  // A held brick moves, and pushes what it touches, only in Bullet's steps.
+  step.advance_bullet = !w.model || step.awake > 0 || !w.sets.held().empty();
   // Nothing moved and nothing is pending: the model would find what it found.
   step.run_model = w.model && (step.advance_bullet || w.model_changed);
 
@@ -277,7 +275,16 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   if (!brick) return Status::error("no brick with id '" + id + "'");
   if (!impulse.allFinite()) return Status::error("impulse is not finite");
   if (!point.allFinite()) return Status::error("point of application is not finite");
+  if (brick->mode == BrickMode::kHeld)
+    return Status::error("brick '" + id + "' is held: move it through the held target");
   const BodyHandle h = brick->handle;
+  const OrientedBox box = w.boxOf(h);
+  const Eigen::Vector3d local = box.pose.inverse() * point;
+  const double outside = (local.cwiseAbs() - box.half_extents).cwiseMax(0.0).norm();
+  if (outside > kPushPointTolerance)
+    return Status::error("point of application " + formatVector(point) + " is " +
+                         millimetres(outside) + " outside brick '" + id + "' (at most " +
+                         millimetres(kPushPointTolerance) + ")");
   // The speeds the push leaves the brick with, before Bullet sees it: a push
   // that would launch it past the placement limits is refused, not repaired.
   const Eigen::Vector3d lever = point - w.scene.centreOfMass(h);
@@ -303,6 +310,84 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   }
   w.scene.activate(h);
   w.scene.applyImpulse(h, impulse, point);
+  return Status::success();
+}
+
+Status BrickWorld::graspBrick(const std::string& id) {
+  WorldState& w = *state_;
+  BrickRecord* brick = w.bricks.find(id);
+  if (!brick) return Status::error("no brick with id '" + id + "'");
+  if (!w.sets.held().empty())
+    return Status::error("brick '" + w.sets.held().front()->id +
+                         "' is already held: release it first (one brick at a time)");
+  if (w.model) {
+    std::vector<std::string> carried;
+    for (BodyHandle upper : w.model->carriedBy(brick->handle)) carried.push_back(w.nameOf(upper));
+    if (!carried.empty())
+      return Status::error("brick '" + id + "' carries " + joinNames(carried) +
+                           ": grasp or remove what rests on it first");
+  }
+  StabilityInput input;
+  input.grasped.push_back(brick->handle);
+  std::vector<std::string> woken;
+  for (const WakeDecision& d : decide(&w, input).wake) woken.push_back(w.nameOf(d.brick));
+  w.placed_at_rest.erase(
+      std::remove(w.placed_at_rest.begin(), w.placed_at_rest.end(), brick->handle),
+      w.placed_at_rest.end());
+  w.sets.transfer(brick, BrickMode::kHeld);
+  brick->held_target = w.scene.pose(brick->handle);
+  w.contacts.clear();
+  w.model_changed = true;
+  w.emit(SimEventKind::kGrasped, id, "held at " + formatVector(brick->held_target.translation()),
+         std::move(woken));
+  return Status::success();
+}
+
+Status BrickWorld::setHeldTarget(const Eigen::Isometry3d& target) {
+  WorldState& w = *state_;
+  if (w.sets.held().empty()) return Status::error("no brick is held: grasp one first");
+  BrickRecord* brick = w.sets.held().front();
+  if (!target.translation().allFinite())
+    return Status::error("target position is not finite: " + formatVector(target.translation()));
+  if (!isRotation(target.linear()))
+    return Status::error(
+        "target orientation is not a proper rotation (NaN, Inf or not orthonormal)");
+  double lowest = target.translation().z();
+  for (const Eigen::Vector3d& corner : corners(OrientedBox{target, brick->type.halfExtents()}))
+    lowest = std::min(lowest, corner.z());
+  if (lowest < -w.options.overlap_tolerance)
+    return Status::error("target puts brick '" + brick->id + "' " + millimetres(-lowest) +
+                         " below the table top (z = 0)");
+  brick->held_target = target;
+  return Status::success();
+}
+
+std::string BrickWorld::heldBrick() const {
+  return state_->sets.held().empty() ? std::string() : state_->sets.held().front()->id;
+}
+
+Status BrickWorld::releaseBrick(const std::string& id, const Eigen::Vector3d& linear_velocity,
+                                const Eigen::Vector3d& angular_velocity) {
+  WorldState& w = *state_;
+  BrickRecord* brick = w.bricks.find(id);
+  if (!brick) return Status::error("no brick with id '" + id + "'");
+  if (brick->mode != BrickMode::kHeld) return Status::error("brick '" + id + "' is not held");
+  if (!linear_velocity.allFinite() || !angular_velocity.allFinite())
+    return Status::error("release velocity is not finite");
+  if (linear_velocity.norm() > w.options.max_linear_speed)
+    return Status::error("release speed " + std::to_string(linear_velocity.norm()) +
+                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
+  if (angular_velocity.norm() > w.options.max_angular_speed)
+    return Status::error("release spin " + std::to_string(angular_velocity.norm()) +
+                         " rad/s exceeds the limit of " +
+                         std::to_string(w.options.max_angular_speed));
+  w.sets.transfer(brick, BrickMode::kDynamic);
+  w.scene.setVelocity(brick->handle, linear_velocity, angular_velocity);
+  w.contacts.clear();
+  w.model_changed = true;
+  w.emit(SimEventKind::kReleased, id,
+         "let go at " + formatVector(w.scene.pose(brick->handle).translation()) + " moving at " +
+             formatVector(linear_velocity) + " m/s");
   return Status::success();
 }
 

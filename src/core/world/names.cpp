@@ -35,6 +35,10 @@ const char* toString(SimEventKind kind) {
       return "removed";
     case SimEventKind::kNonFinite:
       return "nonfinite";
+    case SimEventKind::kGrasped:
+      return "grasped";
+    case SimEventKind::kReleased:
+      return "released";
   }
   return "unknown";
 }

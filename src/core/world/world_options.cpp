@@ -26,6 +26,14 @@ Status validate(const SleepingOptions& s) {
   return Status::success();
 }
 
+Status validate(const HeldOptions& h) {
+  if (!positive(h.max_linear_speed) || h.max_linear_speed > 10.0)
+    return bad("max_linear_speed", h.max_linear_speed, "must be in (0, 10] m/s");
+  if (!positive(h.max_angular_speed) || h.max_angular_speed > 100.0)
+    return bad("max_angular_speed", h.max_angular_speed, "must be in (0, 100] rad/s");
+  return Status::success();
+}
+
 Status validate(const WorldOptions& o) {
   // Below 10 us a step resolves nothing Bullet needs; at 0.1 s a brick that
   // has fallen a few centimetres crosses several of its own thicknesses in one
@@ -51,6 +59,7 @@ Status validate(const WorldOptions& o) {
     return bad("max_linear_speed", o.max_linear_speed, "must be > 0 m/s");
   if (!positive(o.max_angular_speed))
     return bad("max_angular_speed", o.max_angular_speed, "must be > 0 rad/s");
+  if (Status held = validate(o.held); !held) return prefixed("held/", held);
   if (Status table = validate(o.table); !table) return prefixed("table/", table);
   if (Status stability = validate(o.stability); !stability)
     return prefixed("stability/", stability);
@@ -76,6 +85,13 @@ Status readSleepingOptions(OptionsReader& reader, SleepingOptions* options) {
   });
 }
 
+Status readHeldOptions(OptionsReader& reader, HeldOptions* options) {
+  return readAndValidate(reader, true, options, [&reader](HeldOptions& held) {
+    reader.read("max_linear_speed", &held.max_linear_speed);
+    reader.read("max_angular_speed", &held.max_angular_speed);
+  });
+}
+
 Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
   return readAndValidate(reader, false, options, [&reader](WorldOptions& world) {
     reader.read("time_step", &world.time_step);
@@ -89,6 +105,7 @@ Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
     reader.read("fall_off_depth", &world.fall_off_depth);
     reader.read("max_linear_speed", &world.max_linear_speed);
     reader.read("max_angular_speed", &world.max_angular_speed);
+    reader.section("held", &readHeldOptions, &world.held);
     reader.section("table", &readTableOptions, &world.table);
     reader.section("stability", &readStabilityOptions, &world.stability);
   });

@@ -73,4 +73,10 @@ struct WorldState {
   BodyMotion motionOf(const BrickRecord& brick) const;
 };
 
+/// The decision path: every call of the model goes through decide(), and
+/// every decision is applied by applyDecisions() (bricks change mode,
+/// events are emitted). decide() returns the decisions (none without a model).
+void applyDecisions(WorldState* world, const StabilityDecisions& decisions);
+StabilityDecisions decide(WorldState* world, const StabilityInput& input);
+
 }  // namespace brick_stack_sim

@@ -116,8 +116,9 @@ TEST_P(InvalidInput, NonFiniteImpulse) {
   expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {0, kInf, 0}), "point");
   expectRefused(world_->applyImpulse("ghost", {0, 0, 0.001}, {0, 0, 0}), "no brick");
   expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0.0039}), "m/s, over the limit");
-  // 0.02 N s a metre off the centre about z: 0.02 / I_zz = 1400 rad/s.
-  expectRefused(world_->applyImpulse("base", {0, 0.02, 0}, {1.0, 0, 0.0039}), "spinning");
+  // 0.5 N s at the end of the brick about z: 0.5 * L/2 / I_zz = 2000 rad/s.
+  expectRefused(world_->applyImpulse("base", {0, 0.5, 0}, {0.0585, 0, 0.0039}), "spinning");
+  expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {1.0, 0, 0.0039}), "outside brick");
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, InvalidInput, ::testing::ValuesIn(availableStabilityModes()),

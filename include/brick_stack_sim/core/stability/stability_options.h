@@ -21,6 +21,10 @@ struct StabilityOptions {
   double rest_time = 0.02;           ///< [s]
   /// Contacts closing faster than this are impacts, not support (thesis 3.3.1) [m/s].
   double impact_speed = 0.05;
+  /// A blow on a frozen brick that would slide it less than this, and cannot
+  /// tip it, is absorbed: the brick stays frozen and the striker bounces off
+  /// (a gentle touch, a few cm/s, moves nothing a person could see) [m].
+  double impact_min_slide = 0.0005;
   /// A contact supports only when its normal is within this angle of vertical
   /// [rad]; steeper contacts are leaning, for another model.
   double support_normal_tolerance = 0.26;

@@ -43,8 +43,8 @@ struct PlacementReport {
   /// it on what it touches (statics; 0 when it does not stand) [m/s^2].
   /// Over g it is the tangent of the tilt it survives.
   double acceleration_margin = 0.0;
-  std::vector<std::string> supported_by;    ///< Brick ids, "table" or "floor".
-  std::vector<std::string> would_fall;      ///< Frozen bricks its load would tip.
+  std::vector<std::string> supported_by;  ///< Brick ids, "table" or "floor".
+  std::vector<std::string> would_fall;    ///< Frozen bricks its load would tip.
   std::string reason;
 };
 
@@ -75,10 +75,29 @@ class BrickWorld {
   Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr);
   /// Removes a brick; what rested on it is woken.
   Status removeBrick(const std::string& id);
-  /// Applies an impulse [N s] at a world point [m] to a brick, waking it and
+  /// Applies an impulse [N s] at a world point [m] on or in the brick
+  /// (within kPushPointTolerance of its surface) to a brick, waking it and
   /// what it carries.
   Status applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
                       const Eigen::Vector3d& point);
+  /// How far outside its surface a push may be applied to a brick [m].
+  static constexpr double kPushPointTolerance = 1e-3;
+
+  /// Takes a brick into the hand where it is: kinematic (state kHeld), it
+  /// follows the held target (setHeldTarget), which starts at its pose, and
+  /// pushes what it meets. One brick at a time; a brick that carries frozen
+  /// bricks is refused (what rests on it would be left in the air).
+  Status graspBrick(const std::string& id);
+  /// Where the held brick is to go [m], frame world; it moves there no
+  /// faster than WorldOptions::held allows. Refused when nothing is held, or
+  /// the pose is not finite, not a rotation, or below the table top.
+  Status setHeldTarget(const Eigen::Isometry3d& target);
+  /// The id of the held brick; empty when none is.
+  std::string heldBrick() const;
+  /// Lets the held brick `id` go with these velocities [m/s], [rad/s]
+  /// (frame world): simulated again, it may settle and join the stack.
+  Status releaseBrick(const std::string& id, const Eigen::Vector3d& linear_velocity,
+                      const Eigen::Vector3d& angular_velocity);
   /// Would a brick placed at rest here stand, and would the stack bear it?
   /// Answered by rigid-block statics in every mode (what it touches held
   /// fixed), and by the stability model, when there is one, for the load on

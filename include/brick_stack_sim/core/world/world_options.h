@@ -28,6 +28,14 @@ struct SleepingOptions {
   double time = 2.0;                ///< Time below both thresholds before sleeping [s].
 };
 
+/// A brick held by a teleop or planner (parameters `held/...`): it moves
+/// toward its target no faster than these, so a target far away is a sweep,
+/// not a teleport, and what it strikes is judged as an impact.
+struct HeldOptions {
+  double max_linear_speed = 0.5;   ///< [m/s]
+  double max_angular_speed = 3.0;  ///< [rad/s]
+};
+
 /// Everything that shapes the simulation of a world (the parameters of
 /// config/sim.yaml and config/stability.yaml but the node's own). The
 /// defaults are chosen for KAPLA-sized bricks (8 mm thick); the Bullet scene
@@ -54,6 +62,7 @@ struct WorldOptions {
   double max_linear_speed = 50.0;    ///< [m/s]
   double max_angular_speed = 500.0;  ///< [rad/s]
 
+  HeldOptions held;
   TableOptions table;
   StabilityOptions stability;
 };
@@ -62,6 +71,7 @@ struct WorldOptions {
 /// with the module's path for the nested ones ("table/size = 0: ...").
 Status validate(const TableOptions& options);
 Status validate(const SleepingOptions& options);
+Status validate(const HeldOptions& options);
 Status validate(const WorldOptions& options);
 
 class OptionsReader;
@@ -70,8 +80,9 @@ class OptionsReader;
 /// a key they do not know is an error. `*options` changes only on success.
 Status readTableOptions(OptionsReader& reader, TableOptions* options);
 Status readSleepingOptions(OptionsReader& reader, SleepingOptions* options);
+Status readHeldOptions(OptionsReader& reader, HeldOptions* options);
 /// The world's keys at the reader's level (time_step, gravity, ...) and its
-/// sections table, sleeping and stability. Other keys may share that level
+/// sections table, sleeping, held and stability. Other keys may share that level
 /// (the node's): the caller, who knows them, calls reader.finish().
 Status readWorldOptions(OptionsReader& reader, WorldOptions* options);
 
