@@ -158,8 +158,15 @@ void BrickPlacer::onPoseUpdate(const FeedbackConstPtr& feedback) {
   if (sim_.held()) sim_.publishHeldTarget(ros_adapter::toPoseMsg(ghost_pose_));
 }
 
+bool BrickPlacer::holding() {
+  if (!sim_.held()) return false;
+  sim_.refreshHeld();
+  if (!sim_.held()) showGhost();  // back to the current type's look
+  return sim_.held().has_value();
+}
+
 bool BrickPlacer::readyToPlace(const char* action) {
-  if (!sim_.held()) return true;
+  if (!holding()) return true;
   ROS_WARN("%s: %s is held and the ghost is on it; Release it first", action, sim_.held()->c_str());
   return false;
 }
@@ -216,7 +223,7 @@ void BrickPlacer::selectType(const std::string& type, const FeedbackConstPtr& fe
 }
 
 void BrickPlacer::graspNearest(const FeedbackConstPtr& feedback) {
-  if (sim_.held()) {
+  if (holding()) {
     ROS_WARN("%s: %s is already held (one at a time); Release it first", kGraspEntry,
              sim_.held()->c_str());
     return;

@@ -86,6 +86,8 @@ void KeyboardTeleop::handle(const KeyCommand& command) {
 }
 
 void KeyboardTeleop::grasp() {
+  // A brick lost meanwhile (a reset, a removal) must not block a new grasp.
+  sim_.refreshHeld();
   if (sim_.held()) {
     ROS_WARN("grasp: %s is already held (one at a time); release it first", sim_.held()->c_str());
     return;

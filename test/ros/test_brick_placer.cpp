@@ -2,6 +2,7 @@
 // MENU_SELECT feedback with the ghost's pose on <placer>/feedback. What it
 // did is read back from the simulator (~get_bricks) and from /rosout.
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -16,6 +17,7 @@
 #include <visualization_msgs/InteractiveMarkerInit.h>
 #include <visualization_msgs/InteractiveMarkerUpdate.h>
 
+#include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/teleop/brick_placer.h"
 #include "node_fixture.h"
 #include "support/kapla.h"
@@ -123,6 +125,35 @@ class BrickPlacer : public test::NodeFixture {
     feedback.menu_entry_id = id;
     feedback.pose = ghost;
     feedback_.publish(feedback);
+  }
+
+  /// What RViz sends while the user drags the ghost.
+  void drag(const geometry_msgs::Pose& ghost) {
+    InteractiveMarkerFeedback feedback;
+    feedback.header.frame_id = "world";
+    feedback.header.stamp = ros::Time::now();
+    feedback.client_id = "/test_brick_placer";
+    feedback.marker_name = teleop::kGhostMarker;
+    feedback.control_name = "body";
+    feedback.event_type = InteractiveMarkerFeedback::POSE_UPDATE;
+    feedback.pose = ghost;
+    feedback_.publish(feedback);
+  }
+
+  std::optional<Brick> brick(const std::string& id) {
+    for (const Brick& b : bricks())
+      if (b.id == id) return b;
+    return std::nullopt;
+  }
+
+  /// Waits until brick `id` satisfies `done`.
+  bool waitForBrick(const std::string& id, const std::function<bool(const Brick&)>& done) {
+    return waitFor(
+        [&] {
+          const std::optional<Brick> b = brick(id);
+          return b && done(*b);
+        },
+        kActionTimeout);
   }
 
   /// The first brick that is not in `before`, once the placer has placed it.
@@ -260,6 +291,69 @@ TEST_F(BrickPlacer, ANonFiniteGhostPoseIsRefused) {
   // The placer still works.
   select(teleop::kPlaceHereEntry, pose(0.0, 0.0, 0.1));
   EXPECT_TRUE(newBrick({}));
+}
+
+TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
+  ASSERT_TRUE(place("near", 0.1, 0.1, 0.5 * kThickness).success);
+  ASSERT_TRUE(place("far", -0.15, -0.15, 0.5 * kThickness).success);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ghost_poses_.clear();
+  }
+  // The ghost 5 cm above "near" and 2 cm aside: "near" is the nearest centre.
+  select(teleop::kGraspEntry, pose(0.1, 0.12, 0.05));
+  ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.state == Brick::HELD; }))
+      << "near was not grasped";
+  EXPECT_NE(brick("far")->state, Brick::HELD);
+  // The ghost jumped onto the brick.
+  ASSERT_TRUE(waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return !ghost_poses_.empty() &&
+               std::abs(ghost_poses_.back().position.z - 0.5 * kThickness) < 1e-6;
+      },
+      kActionTimeout))
+      << "the ghost did not move onto the grasped brick";
+
+  // Dragging the ghost 5 cm up carries the brick there.
+  drag(pose(0.1, 0.1, 0.05));
+  ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.pose.position.z > 0.0499; }))
+      << "the held brick did not follow the ghost";
+  const std::optional<Brick> lifted = brick("near");
+  EXPECT_EQ(lifted->state, Brick::HELD);
+  EXPECT_NEAR(lifted->pose.position.x, 0.1, 1e-4);
+  EXPECT_NEAR(lifted->pose.position.y, 0.1, 1e-4);
+
+  // Released at rest, it falls back onto the table.
+  select(teleop::kReleaseEntry, pose(0.1, 0.1, 0.05));
+  ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.state != Brick::HELD; }))
+      << "near was not released";
+  EXPECT_TRUE(waitForBrick("near", [](const Brick& b) {
+    return std::abs(b.pose.position.z - 0.5 * kThickness) < 5e-4;
+  })) << "near did not fall back onto the table";
+  EXPECT_NEAR(brick("near")->pose.position.x, 0.1, 5e-3);
+
+  // With nothing held, Release says so and changes nothing.
+  select(teleop::kReleaseEntry, pose(0.1, 0.1, 0.05));
+  EXPECT_TRUE(warned("no brick is held"));
+}
+
+TEST_F(BrickPlacer, AGraspRefusalIsShownWithTheSimulatorsMessage) {
+  // A plank carrying a frozen one cannot be grasped.
+  ASSERT_TRUE(place("bottom", -0.1, 0.1, 0.5 * kThickness).success);
+  ASSERT_TRUE(place("top", -0.1, 0.1, 1.5 * kThickness, M_PI / 2).success);
+  ASSERT_TRUE(waitForBrick("top", [](const Brick& b) { return b.state == Brick::STABLE; }));
+  GraspBrick direct;
+  direct.request.id = "bottom";
+  ros::ServiceClient grasp = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick");
+  ASSERT_FALSE(call(grasp, direct).success);
+  ASSERT_FALSE(direct.response.message.empty());
+
+  // Nearer "bottom" (3.9 mm) than "top" (11.7 mm).
+  select(teleop::kGraspEntry, pose(-0.1, 0.1, 0.0));
+  EXPECT_TRUE(warned(direct.response.message))
+      << "no WARN from the placer with: " << direct.response.message;
+  for (const Brick& b : bricks()) EXPECT_NE(b.state, Brick::HELD) << b.id;
 }
 
 }  // namespace

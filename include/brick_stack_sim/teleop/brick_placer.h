@@ -68,6 +68,9 @@ class BrickPlacer {
   void graspNearest(const FeedbackConstPtr& feedback);
   void release(const FeedbackConstPtr& feedback);
 
+  /// Whether the simulator still holds the brick this placer grasped; a
+  /// brick it lost (a reset, a removal) is forgotten and the ghost restored.
+  bool holding();
   /// Whether a place request may go ahead: no brick is held (the ghost is
   /// then the held brick, and a new one would be placed inside it).
   bool readyToPlace(const char* action);
