@@ -36,6 +36,23 @@ TEST(SupportGraph, LinksEachBrickUnderItsFrozenSupporters) {
   EXPECT_FALSE(graph.canSupport(4));  // not frozen: a stack cannot start on it
 }
 
+TEST(SupportGraph, EraseAndUnlinkLeavesTheLoadInPlaceWithoutItsContacts) {
+  // b1 slid by an impact: b3 stays frozen, rests on b2 alone until b1 is
+  // put back, and is judged again; b0 no longer carries b1.
+  SupportGraph graph = twoStacks();
+  graph.takeChangedComponents();
+  EXPECT_EQ(graph.eraseAndUnlink(1), (std::set<BodyHandle>{3}));
+  EXPECT_FALSE(graph.contains(1));
+  ASSERT_TRUE(graph.contains(3));
+  ASSERT_EQ(graph.find(3)->supports.size(), 1u);
+  EXPECT_EQ(graph.find(3)->supports.front().supporter, 2u);
+  EXPECT_EQ(graph.find(0)->carries, (std::set<BodyHandle>{2}));
+  EXPECT_TRUE(graph.hasChanges());
+  const std::vector<std::vector<BodyHandle>> changed = graph.takeChangedComponents();
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_EQ(changed.front(), (std::vector<BodyHandle>{0, 2, 3}));
+}
+
 TEST(SupportGraph, ChangedComponentsAreTakenOnce) {
   SupportGraph graph = twoStacks();
   ASSERT_TRUE(graph.hasChanges());
