@@ -92,13 +92,13 @@ void BrickPlacer::buildMenu() {
 }
 
 void BrickPlacer::showGhost() {
-  const bool holding = sim_.held().has_value();
-  const Eigen::Vector3d size = holding ? held_size_ : types_.find(type_)->size;
+  const bool in_hand = sim_.held().has_value();
+  const Eigen::Vector3d size = in_hand ? held_size_ : types_.find(type_)->size;
 
   InteractiveMarker ghost;
   ghost.header.frame_id = kWorldFrame;
   ghost.name = kGhostMarker;
-  ghost.description = holding ? "holding " + *sim_.held() + " (Release in the menu)"
+  ghost.description = in_hand ? "holding " + *sim_.held() + " (Release in the menu)"
                               : type_ + " (right-click: menu)";
   ghost.pose = ros_adapter::toPoseMsg(ghost_pose_);
   ghost.scale = static_cast<float>(std::max(kMinHandleSize, kHandleScale * size.maxCoeff()));
@@ -109,9 +109,9 @@ void BrickPlacer::showGhost() {
   box.scale.y = size.y();
   box.scale.z = size.z();
   // Blue for a brick to be placed, orange for one in hand.
-  box.color.r = holding ? 1.0f : 0.2f;
-  box.color.g = holding ? 0.55f : 0.6f;
-  box.color.b = holding ? 0.1f : 1.0f;
+  box.color.r = in_hand ? 1.0f : 0.2f;
+  box.color.g = in_hand ? 0.55f : 0.6f;
+  box.color.b = in_hand ? 0.1f : 1.0f;
   box.color.a = kGhostAlpha;
   InteractiveMarkerControl body;
   body.name = "body";
