@@ -93,5 +93,19 @@ class NodeFixture : public ::testing::Test {
   ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_, query_;
 };
 
+/// The main() of a rostest gtest node named `node_name`: service calls are
+/// answered while a spinner thread takes the topics the tests subscribe to.
+inline int runNodeTests(int argc, char** argv, const char* node_name) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, node_name);
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  spinner.stop();
+  ros::shutdown();
+  return result;
+}
+
 }  // namespace test
 }  // namespace brick_stack_sim

@@ -255,13 +255,5 @@ TEST_F(StabilityNode, BrickPastTheTableEdgeIsNeverStableThereAndFallsOff) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_stability_node");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  spinner.stop();
-  ros::shutdown();
-  return result;
+  return brick_stack_sim::test::runNodeTests(argc, argv, "test_stability_node");
 }

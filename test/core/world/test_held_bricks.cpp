@@ -77,7 +77,7 @@ TEST_P(HeldBrick, BadRequestsAreRefusedAndChangeNothing) {
   buildTower(2);
   ASSERT_TRUE(world_->addBrick(test::placement("loose", {0.3, 0.0, kKaplaThickness / 2})).ok);
   test::runFor(world_.get(), 0.1);
-  const std::string before = test::fingerprint(*world_);
+  std::string before = test::fingerprint(*world_);
   auto refused = [&](const Status& status, const std::string& expected) {
     EXPECT_FALSE(status.ok);
     EXPECT_NE(status.message.find(expected), std::string::npos)
@@ -97,25 +97,17 @@ TEST_P(HeldBrick, BadRequestsAreRefusedAndChangeNothing) {
 
   ASSERT_TRUE(world_->graspBrick("loose").ok);
   world_->step();
-  const std::string holding = test::fingerprint(*world_);
-  auto refusedWhileHolding = [&](const Status& status, const std::string& expected) {
-    EXPECT_FALSE(status.ok);
-    EXPECT_NE(status.message.find(expected), std::string::npos)
-        << "'" << status.message << "' does not mention '" << expected << "'";
-    EXPECT_TRUE(test::fingerprint(*world_) == holding) << status.message;
-  };
-  refusedWhileHolding(world_->graspBrick("t3"), "already held");
-  refusedWhileHolding(world_->graspBrick("loose"), "already held");
-  refusedWhileHolding(world_->setHeldTarget(poseAt({kNaN, 0, 0.1})), "not finite");
+  before = test::fingerprint(*world_);  // holding it now
+  refused(world_->graspBrick("t3"), "already held");
+  refused(world_->graspBrick("loose"), "already held");
+  refused(world_->setHeldTarget(poseAt({kNaN, 0, 0.1})), "not finite");
   Eigen::Isometry3d skewed = poseAt({0.3, 0, 0.1});
   skewed.linear()(0, 0) = 2.0;
-  refusedWhileHolding(world_->setHeldTarget(skewed), "rotation");
-  refusedWhileHolding(world_->setHeldTarget(poseAt({0.3, 0, 0.0})), "below the table top");
-  refusedWhileHolding(world_->releaseBrick("loose", {kNaN, 0, 0}, Eigen::Vector3d::Zero()),
-                      "not finite");
-  refusedWhileHolding(world_->releaseBrick("loose", {100, 0, 0}, Eigen::Vector3d::Zero()),
-                      "exceeds the limit");
-  refusedWhileHolding(world_->applyImpulse("loose", {0.001, 0, 0}, {0.3, 0, 0.0039}), "is held");
+  refused(world_->setHeldTarget(skewed), "rotation");
+  refused(world_->setHeldTarget(poseAt({0.3, 0, 0.0})), "below the table top");
+  refused(world_->releaseBrick("loose", {kNaN, 0, 0}, Eigen::Vector3d::Zero()), "not finite");
+  refused(world_->releaseBrick("loose", {100, 0, 0}, Eigen::Vector3d::Zero()), "exceeds the limit");
+  refused(world_->applyImpulse("loose", {0.001, 0, 0}, {0.3, 0, 0.0039}), "is held");
   EXPECT_TRUE(world_->checkInvariants().ok) << world_->checkInvariants().message;
 }
 
