@@ -359,12 +359,5 @@ TEST_F(BrickPlacer, AGraspRefusalIsShownWithTheSimulatorsMessage) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_brick_placer");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  spinner.stop();
-  ros::shutdown();
-  return result;
+  return brick_stack_sim::test::runNodeTests(argc, argv, "test_brick_placer");
 }
