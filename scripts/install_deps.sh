@@ -12,8 +12,10 @@ build_packages=(
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
   libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
   googletest libgtest-dev
+  # teleop: the RViz brick placer
+  libinteractive-markers-dev
 )
-gui_packages=(rviz xvfb imagemagick)
+gui_packages=(rviz xvfb imagemagick libgl1-mesa-dri)
 bench_packages=(python3-matplotlib)
 
 wanted=("${build_packages[@]}")

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <ros/ros.h>
+
+#include "brick_stack_sim/teleop/keyboard_command.h"
+#include "brick_stack_sim/teleop/raw_terminal.h"
+#include "brick_stack_sim/teleop/sim_client.h"
+#include "brick_stack_sim/teleop/teleop_options.h"
+
+namespace brick_stack_sim {
+namespace teleop {
+
+/// A terminal teleop: keys move a cursor (and the brick held at it) and turn
+/// it about z, one key grasps the brick nearest the cursor, one releases it
+/// (keyBindings()). While a brick is held, the cursor is published as the
+/// simulator's ~held_target on every key and at options.held_target_rate; the
+/// cursor itself is shown in RViz as an arrow on `~cursor`.
+class KeyboardTeleop {
+ public:
+  explicit KeyboardTeleop(const KeyboardOptions& options);
+
+  /// Prints the key map and handles keys from `terminal` until ROS shuts down
+  /// (Ctrl-C) or the input ends.
+  void run(RawTerminal& terminal);
+
+ private:
+  void handle(const KeyCommand& command);
+  void grasp();
+  void release();
+  /// The cursor as a marker and, while a brick is held, as its target.
+  void publishCursor();
+  void printCursor() const;
+
+  KeyboardOptions options_;
+  ros::NodeHandle node_handle_;
+  SimClient sim_;
+  Cursor cursor_;
+  ros::Publisher cursor_marker_;
+};
+
+}  // namespace teleop
+}  // namespace brick_stack_sim

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Writes docs/images/placer.png, the README's picture of the brick placer:
+# teleop.launch on the tower10 scene under Xvfb with Mesa's software GL, the
+# ghost brick over the tower, captured with ImageMagick once RViz has drawn
+# it. Its own ROS master port and X display keep it off anything running.
+# Usage: bash scripts/screenshot_placer.sh [output.png]
+set -eo pipefail
+source "$(dirname "$0")/env.sh"
+"${repo_root}/scripts/install_deps.sh" gui
+"${repo_root}/scripts/build.sh" brick_stack_sim_node brick_placer
+output="$(realpath -m "${1:-${repo_root}/docs/images/placer.png}")"
+mkdir -p "$(dirname "${output}")"
+
+cd "${workspace}"
+# shellcheck disable=SC1091
+source devel/setup.bash
+export ROS_LOG_DIR="${workspace}/log"
+export ROS_MASTER_URI="http://localhost:${SCREENSHOT_MASTER_PORT:-11431}"
+# RViz needs GL; Xvfb has no GPU, so Mesa renders in software.
+export LIBGL_ALWAYS_SOFTWARE=1
+
+pids=()
+cleanup() {
+  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do kill "${pids[i]}" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+}
+trap cleanup EXIT
+
+# -displayfd: Xvfb picks a free display and tells us which.
+display_file="$(mktemp)"
+Xvfb -displayfd 3 -screen 0 1200x800x24 -nolisten tcp 3>"${display_file}" 2>/dev/null &
+pids+=($!)
+for _ in $(seq 50); do [[ -s "${display_file}" ]] && break; sleep 0.1; done
+[[ -s "${display_file}" ]] || { echo "Xvfb did not start" >&2; exit 1; }
+export DISPLAY=":$(head -n1 "${display_file}")"
+rm -f "${display_file}"
+
+# The tower is 10 layers (7.8 cm); the ghost hovers 7 cm above it where the
+# next layer's first brick goes (along x, over one side).
+roslaunch brick_stack_sim teleop.launch scene:=tower10 \
+  initial_position:="[0.0, -0.0468, 0.15]" initial_yaw:=0.0 output:=log >/dev/null 2>&1 &
+pids+=($!)
+
+# RViz is ready when it listens to the placer; software GL then needs a few
+# seconds for the first frames.
+# (Not "rostopic | grep -q": with pipefail, grep's early exit fails the pipe.)
+rviz_listens() { [[ "$(rostopic info /brick_placer/update 2>/dev/null)" == *"/rviz"* ]]; }
+for _ in $(seq 120); do rviz_listens && break; sleep 0.5; done
+rviz_listens || { echo "RViz never subscribed to /brick_placer/update (see ${ROS_LOG_DIR})" >&2; exit 1; }
+sleep "${SCREENSHOT_RENDER_WAIT:-10}"
+import -window root "${output}"
+echo "wrote ${output}"

@@ -1,0 +1,159 @@
+#include "brick_stack_sim/teleop/keyboard_teleop.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <geometry_msgs/Twist.h>
+#include <visualization_msgs/Marker.h>
+
+#include "brick_stack_sim/ros/conversions.h"
+#include "brick_stack_sim/teleop/placement_geometry.h"
+
+namespace brick_stack_sim {
+namespace teleop {
+
+namespace {
+
+/// How often the loop looks for a key and for ROS callbacks [s]: keys feel
+/// immediate and a shutdown is noticed at once.
+constexpr double kKeyPollPeriod = 0.02;
+/// The cursor arrow's length [m]: about half a KAPLA, so that it shows the
+/// heading without hiding the brick under it.
+constexpr double kArrowLength = 0.06;
+
+geometry_msgs::Pose toPose(const Cursor& cursor) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = cursor.position;
+  pose.linear() = cursor.orientation.toRotationMatrix();
+  return ros_adapter::toPoseMsg(pose);
+}
+
+}  // namespace
+
+KeyboardTeleop::KeyboardTeleop(const KeyboardOptions& options)
+    : options_(options), node_handle_("~"), sim_(ros::NodeHandle(), options.teleop.sim) {
+  cursor_.position = options.teleop.initial_position;
+  cursor_.orientation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(options.teleop.initial_yaw, Eigen::Vector3d::UnitZ()));
+  // Latched: RViz started after a key press still shows where the cursor is.
+  cursor_marker_ = node_handle_.advertise<visualization_msgs::Marker>("cursor", 1, true);
+}
+
+void KeyboardTeleop::run(RawTerminal& terminal) {
+  std::printf("keyboard_teleop: keys (steps %g m, %g deg)\n%s\n", options_.steps.linear,
+              options_.steps.angular * 180.0 / M_PI, keyMapText().c_str());
+  std::fflush(stdout);
+  sim_.waitForSimulator(options_.teleop.wait_for_sim);
+  publishCursor();
+  printCursor();
+  const ros::WallDuration target_period(1.0 / options_.held_target_rate);
+  ros::WallTime next_target = ros::WallTime::now() + target_period;
+  while (ros::ok() && !terminal.inputEnded()) {
+    char key = 0;
+    if (terminal.readKey(kKeyPollPeriod, &key)) handle(commandForKey(key));
+    ros::spinOnce();
+    // Repeated so that a target lost on the way, or sent before the
+    // simulator subscribed, does not leave the brick short of the cursor.
+    if (sim_.held() && ros::WallTime::now() >= next_target) {
+      sim_.publishHeldTarget(toPose(cursor_));
+      next_target = ros::WallTime::now() + target_period;
+    }
+  }
+  if (terminal.inputEnded()) std::printf("keyboard_teleop: input ended\n");
+}
+
+void KeyboardTeleop::handle(const KeyCommand& command) {
+  switch (command.action) {
+    case KeyAction::kNone:
+      return;
+    case KeyAction::kHelp:
+      std::printf("%s\n", keyMapText().c_str());
+      break;
+    case KeyAction::kGrasp:
+      grasp();
+      break;
+    case KeyAction::kRelease:
+      release();
+      break;
+    case KeyAction::kMove:
+    case KeyAction::kTurn:
+      cursor_ = moveCursor(cursor_, command, options_.steps);
+      publishCursor();
+      break;
+  }
+  printCursor();
+}
+
+void KeyboardTeleop::grasp() {
+  // A brick lost meanwhile (a reset, a removal) must not block a new grasp.
+  sim_.refreshHeld();
+  if (sim_.held()) {
+    ROS_WARN("grasp: %s is already held (one at a time); release it first", sim_.held()->c_str());
+    return;
+  }
+  std::vector<Brick> bricks;
+  if (!sim_.getBricks(&bricks)) return;
+  std::vector<Eigen::Vector3d> centres;
+  for (const Brick& brick : bricks)
+    centres.emplace_back(brick.pose.position.x, brick.pose.position.y, brick.pose.position.z);
+  const int nearest = nearestIndex(cursor_.position, centres);
+  if (nearest < 0) {
+    ROS_WARN("grasp: there is no brick to grasp");
+    return;
+  }
+  const Brick& brick = bricks[nearest];
+  if (!sim_.graspBrick(brick.id)) return;
+  // The cursor jumps onto the brick: the next key moves the brick by one
+  // step from where it is, not to where the cursor was.
+  Eigen::Isometry3d pose;
+  if (ros_adapter::fromMsg(brick.pose, "brick pose", &pose)) {
+    cursor_.position = pose.translation();
+    cursor_.orientation = Eigen::Quaterniond(pose.linear()).normalized();
+  }
+  publishCursor();
+  std::printf("holding %s\n", brick.id.c_str());
+}
+
+void KeyboardTeleop::release() {
+  if (!sim_.held()) {
+    ROS_WARN("release: no brick is held");
+    return;
+  }
+  const std::string id = *sim_.held();
+  if (sim_.releaseHeld(geometry_msgs::Twist())) std::printf("released %s\n", id.c_str());
+  publishCursor();
+}
+
+void KeyboardTeleop::publishCursor() {
+  const geometry_msgs::Pose pose = toPose(cursor_);
+  visualization_msgs::Marker arrow;
+  arrow.header.frame_id = kWorldFrame;
+  arrow.header.stamp = ros::Time::now();
+  arrow.ns = "cursor";
+  arrow.type = visualization_msgs::Marker::ARROW;
+  arrow.pose = pose;
+  arrow.scale.x = kArrowLength;
+  arrow.scale.y = 0.006;
+  arrow.scale.z = 0.006;
+  // Green while free, orange while a brick follows it.
+  const bool holding = sim_.held().has_value();
+  arrow.color.r = holding ? 1.0f : 0.2f;
+  arrow.color.g = holding ? 0.55f : 0.9f;
+  arrow.color.b = holding ? 0.1f : 0.2f;
+  arrow.color.a = 1.0f;
+  cursor_marker_.publish(arrow);
+  if (holding) sim_.publishHeldTarget(pose);
+}
+
+void KeyboardTeleop::printCursor() const {
+  const Eigen::Vector3d x_axis = cursor_.orientation * Eigen::Vector3d::UnitX();
+  std::printf("cursor (%.4f, %.4f, %.4f) m, heading %.1f deg%s%s\n", cursor_.position.x(),
+              cursor_.position.y(), cursor_.position.z(),
+              std::atan2(x_axis.y(), x_axis.x()) * 180.0 / M_PI, sim_.held() ? ", holding " : "",
+              sim_.held() ? sim_.held()->c_str() : "");
+  std::fflush(stdout);
+}
+
+}  // namespace teleop
+}  // namespace brick_stack_sim
