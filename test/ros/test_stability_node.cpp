@@ -178,6 +178,28 @@ TEST_F(StabilityNode, TowerFreezesAndRemovalWakesExactlyTheBricksAbove) {
   for (const std::string& id : above) EXPECT_EQ(tower[id].state, Brick::DYNAMIC) << id;
 }
 
+TEST_F(StabilityNode, BottomBrickComAboveIsTheCentreOfMassOfEverythingItCarries) {
+  // Thesis figure 5: the COM-above of a brick is the centre of mass of it and
+  // all it carries, in 3D. A symmetric 4-layer tower splits every load evenly
+  // between the two bricks under it, so each bottom brick's COM-above is at
+  // the height of the whole tower's centre of mass: the mean of its layers'.
+  const int layers = 4;
+  double centre_height = 0.0;
+  for (int i = 0; i < 2 * layers; ++i) {
+    ASSERT_TRUE(placeTowerBrick("c" + std::to_string(i), i / 2, i % 2));
+    centre_height += test::towerSlot(i / 2, i % 2).z / (2 * layers);
+  }
+  step(10);
+  std::map<std::string, Brick> tower = bricks();
+  for (const char* bottom : {"c0", "c1"}) {
+    EXPECT_EQ(tower[bottom].state, Brick::STABLE) << bottom;
+    EXPECT_NEAR(tower[bottom].com_above.z, centre_height, 1e-9) << bottom;
+    EXPECT_NEAR(tower[bottom].mass_above, layers * tower[bottom].mass, 1e-9) << bottom;
+  }
+  // A top brick carries only itself: its COM-above is its own centre.
+  EXPECT_NEAR(tower["c7"].com_above.z, tower["c7"].pose.position.z, 1e-9);
+}
+
 TEST_F(StabilityNode, MarkersShowBricksComRaysAndContactMeshes) {
   std::mutex mutex;
   std::optional<MarkerArray> last;

@@ -133,15 +133,15 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
                                 std::vector<WakeDecision>* unstable) const {
   SupportGraph::Node& node = *graph->find(handle);
   // COM-above: the resultant of its own weight and the loads it receives,
-  // each where it acts. Heights only place the marker ray: mass-weighted.
+  // each where it acts, at the height of the centre of mass of it and all
+  // it carries (each share at the height of what passed it down).
   double mass = node.mass;
   Eigen::Vector3d moment = node.mass * node.com;
   for (const LoadShare& load : node.received) {
     mass += load.mass;
-    moment.head<2>() += load.mass * load.point;
+    moment += load.mass * Eigen::Vector3d(load.point.x(), load.point.y(), load.height);
   }
   Eigen::Vector3d com_above = moment / mass;
-  com_above.z() = node.com.z();
   node.stability.frozen = true;
   node.stability.mass_above = mass;
   node.stability.supports = node.supports;
@@ -183,7 +183,8 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
   for (std::size_t i = 0; i < node.supports.size(); ++i) {
     SupportGraph::Node* below = graph->find(node.supports[i].supporter);
     if (!below) continue;  // the table carries anything
-    const LoadShare& share = (*shares)[i];
+    LoadShare& share = (*shares)[i];
+    share.height = com_above.z();
     below->received.push_back(share);
     // Friction at the interface carries the sideways part, in proportion.
     if (!resultant.sideways.isZero())

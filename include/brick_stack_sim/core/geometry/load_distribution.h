@@ -13,6 +13,9 @@ namespace brick_stack_sim {
 struct LoadShare {
   double mass = 0.0;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  /// Height of the centre of mass of what passes this share down [m]: it
+  /// places the COM-above in 3D (thesis figure 5), not where the load acts.
+  double height = 0.0;
 };
 
 /// How the load was split (tests check that each rule is reached).
