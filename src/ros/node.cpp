@@ -142,6 +142,14 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
       restartPacing();
     }
     if (done > 0) publishClock();
+  } else if (ros::WallTime::now() >= next_paused_publish_) {
+    // Paused, the graph still sees the simulation, as Gazebo's does: a
+    // client that joins now gets the clock and the state, at publish_rate
+    // of wall time.
+    next_paused_publish_ =
+        ros::WallTime::now() + ros::WallDuration(1.0 / options_.config.publish.rate);
+    publishClock();
+    state_dirty_ = true;
   }
   publishEvents();
   if (state_dirty_) publishState();

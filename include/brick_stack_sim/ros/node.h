@@ -125,7 +125,8 @@ class SimNode {
   bool state_dirty_ = true;         ///< Something changed that ~bricks has not shown yet.
   double next_publish_time_ = 0.0;  ///< Sim time of the next ~bricks [s].
   ros::WallTime pacing_wall_start_;
-  double pacing_sim_start_ = 0.0;  ///< [s]
+  ros::WallTime next_paused_publish_;  ///< While paused: the next ~bricks and /clock.
+  double pacing_sim_start_ = 0.0;      ///< [s]
   /// tf refuses a second transform of a frame with the same stamp; while the
   /// clock stands still (paused, sim time stamps) only new frames are sent.
   ros::Time last_tf_stamp_;
