@@ -4,7 +4,21 @@
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
 mkdir -p "${workspace}/src"
-ln -sfn "${repo_root}" "${workspace}/src/brick_stack_sim"
+# The workspace's view of the package: a directory of links to the
+# repository's entries, all but the workspace itself. One link to the whole
+# repository put the workspace inside its own source space, and rosrun's
+# `find -L` reported a file-system loop on every call.
+package_view="${workspace}/src/brick_stack_sim"
+if [[ -L "${package_view}" ]]; then rm "${package_view}"; fi
+mkdir -p "${package_view}"
+for link in "${package_view}"/* "${package_view}"/.[!.]*; do
+  if [[ -L "${link}" && ! -e "${link}" ]]; then rm "${link}"; fi  # its entry is gone
+done
+for entry in "${repo_root}"/* "${repo_root}"/.[!.]*; do
+  name="$(basename "${entry}")"
+  case "${name}" in .catkin_ws | .git) continue ;; esac
+  if [[ -e "${entry}" ]]; then ln -sfn "${entry}" "${package_view}/${name}"; fi
+done
 cd "${workspace}"
 log="${workspace}/build.log"
 echo "Building in ${workspace} (log: ${log})"
