@@ -80,6 +80,7 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
       nh.advertiseService(kReleaseBrickService, &SimNode::releaseBrick, &self));
   self.held_target_subscriber_ = nh.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, &self);
 
+  self.publishTableFrame();
   self.restartPacing();
   self.step_timer_ = nh.createWallTimer(ros::WallDuration(1.0 / options.step_timer_rate),
                                         &SimNode::onStepTimer, &self);
@@ -174,6 +175,15 @@ ros::Time SimNode::stamp() const {
   return options_.config.publish.clock ? ros::Time(simTime()) : ros::Time::now();
 }
 
+void SimNode::publishTableFrame() {
+  geometry_msgs::TransformStamped table;
+  table.header.stamp = stamp();
+  table.header.frame_id = options_.config.publish.frame_id;
+  table.child_frame_id = options_.config.publish.frame_prefix + "table";
+  table.transform.rotation.w = 1.0;  // the table top's centre is the fixed frame's origin
+  static_tf_broadcaster_.sendTransform(table);
+}
+
 void SimNode::publishClock() {
   if (!options_.config.publish.clock) return;
   rosgraph_msgs::Clock clock;
@@ -223,7 +233,7 @@ void SimNode::publishState() {
       geometry_msgs::TransformStamped transform;
       transform.header.stamp = now;
       transform.header.frame_id = options_.config.publish.frame_id;
-      transform.child_frame_id = brick.id;
+      transform.child_frame_id = options_.config.publish.frame_prefix + brick.id;
       transform.transform = toTransformMsg(brick.pose);
       transforms.push_back(transform);
     }

@@ -78,6 +78,7 @@ TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
   EXPECT_EQ(stability.min_margin, defaults.stability.min_margin);
   EXPECT_EQ(options.config.world.table.size, defaults.table.size);
   EXPECT_EQ(options.config.publish.frame_id, "world");
+  EXPECT_EQ(options.config.publish.frame_prefix, "");
   EXPECT_TRUE(options.config.data.scene_dirs.empty());
   EXPECT_TRUE(validate(options.config.world).ok);
   EXPECT_TRUE(validate(options.config.publish).ok);
@@ -240,6 +241,8 @@ TEST(NodeOptions, AcceptsBoundaryStabilityThresholds) {
 TEST(NodeOptions, RefusesBadStrings) {
   expectRefused("frame_id", std::string(""));
   expectRefused("frame_id", std::string("/world"));
+  expectRefused("frame_prefix", std::string("/sim1/"));
+  expectRefused("frame_prefix", std::string("sim 1/"));
 }
 
 TEST(NodeOptions, RefusesUnknownAndUnavailableModes) {

@@ -8,6 +8,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "brick_stack_sim/GetBricks.h"
@@ -91,6 +92,8 @@ class SimNode {
   /// ~markers for `bricks` (all finite): boxes, COM-above rays, contact meshes.
   void publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp);
   void publishClock();
+  /// `<frame_prefix>table` under the fixed frame, at the table top's centre.
+  void publishTableFrame();
   void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
 
   // --- services: one handler each; they always return true so the caller
@@ -138,6 +141,8 @@ class SimNode {
   ros::Publisher markers_publisher_;
   ros::Publisher clock_publisher_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  /// Latched: `<frame_prefix>table` at the table top's centre.
+  tf2_ros::StaticTransformBroadcaster static_tf_broadcaster_;
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;

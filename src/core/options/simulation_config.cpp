@@ -15,6 +15,7 @@ Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
     reader.read("publish_clock", &publish.clock);
     reader.read("real_time_factor", &publish.real_time_factor);
     reader.read("frame_id", &publish.frame_id);
+    reader.read("frame_prefix", &publish.frame_prefix);
   });
 }
 
@@ -41,6 +42,10 @@ Status validate(const PublishOptions& p) {
       p.frame_id.find_first_of(" \t\n") != std::string::npos)
     return bad("frame_id", "'" + p.frame_id + "'",
                "must be a non-empty tf frame id without a leading '/' or spaces");
+  if ((!p.frame_prefix.empty() && p.frame_prefix.front() == '/') ||
+      p.frame_prefix.find_first_of(" \t\n") != std::string::npos)
+    return bad("frame_prefix", "'" + p.frame_prefix + "'",
+               "must be empty or a tf name prefix without a leading '/' or spaces");
   return Status::success();
 }
 

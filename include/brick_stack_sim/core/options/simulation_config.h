@@ -26,12 +26,15 @@ struct PublishOptions {
   bool clock = false;              ///< Publish /clock so the graph can run on sim time.
   double real_time_factor = 1.0;   ///< Sim time per wall time [-]; 0: as fast as possible.
   std::string frame_id = "world";  ///< Fixed frame of every published pose.
+  /// Put before every frame the node names on tf (bricks, the table), so two
+  /// simulators, or a robot with a frame called b0, do not clash: "sim1/".
+  std::string frame_prefix;
 };
 
 /// Everything config/sim.yaml and config/stability.yaml hold: the one
 /// options tree of the node (its private parameters) and of the runner
 /// (stack_sim_run --config). Keys: the world's (WorldOptions) and
-/// publish_rate, publish_clock, real_time_factor, frame_id, types_urdf,
+/// publish_rate, publish_clock, real_time_factor, frame_id, frame_prefix, types_urdf,
 /// materials_yaml, scene_dirs and scene, all at the top.
 struct SimulationConfig {
   WorldOptions world;
