@@ -96,9 +96,7 @@ bool slideFrozen(WorldState* w, BrickRecord* brick, BodyHandle striker,
   StabilityInput input;
   input.slid.push_back({w->motionOf(*brick),
                         restingContacts(*w, brick->handle, brick->type.friction, box, low, high)});
-  StabilityDecisions decisions;
-  w->model->decide(input, &decisions);
-  applyDecisions(w, decisions);
+  decide(w, input);
   return true;
 }
 
