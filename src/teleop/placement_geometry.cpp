@@ -19,18 +19,6 @@ Polygon2d footprint(const OrientedBox& box) {
   return convexHull(points);
 }
 
-double lowestZ(const OrientedBox& box) {
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& corner : corners(box)) lowest = std::min(lowest, corner.z());
-  return lowest;
-}
-
-double highestZ(const OrientedBox& box) {
-  double highest = -std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& corner : corners(box)) highest = std::max(highest, corner.z());
-  return highest;
-}
-
 }  // namespace
 
 double supportTopUnder(const OrientedBox& ghost, const std::vector<OrientedBox>& bricks) {
@@ -40,7 +28,7 @@ double supportTopUnder(const OrientedBox& ghost, const std::vector<OrientedBox>&
   for (const OrientedBox& brick : bricks) {
     // The hull of a NaN corner is undefined: such a brick supports nothing.
     if (!brick.pose.matrix().allFinite() || !brick.half_extents.allFinite()) continue;
-    const double brick_top = highestZ(brick);
+    const double brick_top = bounds(brick).max().z();
     if (brick_top <= top || brick_top > ghost_centre_z) continue;
     if (area(intersectConvex(ghost_footprint, footprint(brick))) < kMinFootprintOverlap) continue;
     top = brick_top;
@@ -50,7 +38,7 @@ double supportTopUnder(const OrientedBox& ghost, const std::vector<OrientedBox>&
 
 Eigen::Isometry3d restingPose(const OrientedBox& ghost, const std::vector<OrientedBox>& bricks) {
   Eigen::Isometry3d pose = ghost.pose;
-  pose.translation().z() += supportTopUnder(ghost, bricks) - lowestZ(ghost);
+  pose.translation().z() += supportTopUnder(ghost, bricks) - bounds(ghost).min().z();
   return pose;
 }
 

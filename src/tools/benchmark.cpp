@@ -71,12 +71,11 @@ BenchCase makeCase(const std::string& label, const std::string& scene, BenchMetr
 double deepestPenetration(const std::vector<BrickSnapshot>& bricks, const TableOptions& table) {
   double deepest = 0.0;
   std::vector<OrientedBox> boxes;
-  std::vector<Eigen::AlignedBox3d> bounds;
+  std::vector<Eigen::AlignedBox3d> extents;
   for (const BrickSnapshot& b : bricks) {
     boxes.push_back(OrientedBox{b.pose, 0.5 * b.size});
-    Eigen::AlignedBox3d box;
-    for (const Eigen::Vector3d& corner : corners(boxes.back())) box.extend(corner);
-    bounds.push_back(box);
+    const Eigen::AlignedBox3d box = bounds(boxes.back());
+    extents.push_back(box);
     // Into the table: only bricks on it (one that fell off may lie on the
     // floor under the table top).
     const Eigen::Vector3d& centre = b.pose.translation();
@@ -86,7 +85,7 @@ double deepestPenetration(const std::vector<BrickSnapshot>& bricks, const TableO
   }
   for (std::size_t i = 0; i < boxes.size(); ++i)
     for (std::size_t j = i + 1; j < boxes.size(); ++j)
-      if (bounds[i].intersects(bounds[j]))
+      if (extents[i].intersects(extents[j]))
         deepest = std::max(deepest, -separation(boxes[i], boxes[j]));
   return deepest;
 }

@@ -17,9 +17,12 @@ std::array<Eigen::Vector3d, 8> corners(const OrientedBox& box) {
   return result;
 }
 
-namespace {
+Eigen::AlignedBox3d bounds(const OrientedBox& box) {
+  Eigen::AlignedBox3d result;
+  for (const Eigen::Vector3d& corner : corners(box)) result.extend(corner);
+  return result;
+}
 
-/// Half the length of the box's projection on the unit `axis`.
 double projectedRadius(const OrientedBox& box, const Eigen::Vector3d& axis) {
   const Eigen::Matrix3d& r = box.pose.linear();
   return box.half_extents.x() * std::abs(r.col(0).dot(axis)) +
@@ -27,7 +30,10 @@ double projectedRadius(const OrientedBox& box, const Eigen::Vector3d& axis) {
          box.half_extents.z() * std::abs(r.col(2).dot(axis));
 }
 
-}  // namespace
+Eigen::Vector3d nearestPointIn(const OrientedBox& box, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d local = box.pose.inverse() * point;
+  return box.pose * local.cwiseMax(-box.half_extents).cwiseMin(box.half_extents);
+}
 
 double separation(const OrientedBox& a, const OrientedBox& b) {
   const Eigen::Vector3d offset = b.pose.translation() - a.pose.translation();

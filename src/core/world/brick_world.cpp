@@ -278,9 +278,7 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   if (brick->mode == BrickMode::kHeld)
     return Status::error("brick '" + id + "' is held: move it through the held target");
   const BodyHandle h = brick->handle;
-  const OrientedBox box = w.boxOf(h);
-  const Eigen::Vector3d local = box.pose.inverse() * point;
-  const double outside = (local.cwiseAbs() - box.half_extents).cwiseMax(0.0).norm();
+  const double outside = (point - nearestPointIn(w.boxOf(h), point)).norm();
   if (outside > kPushPointTolerance)
     return Status::error("point of application " + formatVector(point) + " is " +
                          millimetres(outside) + " outside brick '" + id + "' (at most " +
@@ -347,17 +345,7 @@ Status BrickWorld::setHeldTarget(const Eigen::Isometry3d& target) {
   WorldState& w = *state_;
   if (w.sets.held().empty()) return Status::error("no brick is held: grasp one first");
   BrickRecord* brick = w.sets.held().front();
-  if (!target.translation().allFinite())
-    return Status::error("target position is not finite: " + formatVector(target.translation()));
-  if (!isRotation(target.linear()))
-    return Status::error(
-        "target orientation is not a proper rotation (NaN, Inf or not orthonormal)");
-  double lowest = target.translation().z();
-  for (const Eigen::Vector3d& corner : corners(OrientedBox{target, brick->type.halfExtents()}))
-    lowest = std::min(lowest, corner.z());
-  if (lowest < -w.options.overlap_tolerance)
-    return Status::error("target puts brick '" + brick->id + "' " + millimetres(-lowest) +
-                         " below the table top (z = 0)");
+  if (Status pose = checkPose(w, target, brick->type.halfExtents(), "target "); !pose) return pose;
   brick->held_target = target;
   return Status::success();
 }
@@ -372,15 +360,8 @@ Status BrickWorld::releaseBrick(const std::string& id, const Eigen::Vector3d& li
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id '" + id + "'");
   if (brick->mode != BrickMode::kHeld) return Status::error("brick '" + id + "' is not held");
-  if (!linear_velocity.allFinite() || !angular_velocity.allFinite())
-    return Status::error("release velocity is not finite");
-  if (linear_velocity.norm() > w.options.max_linear_speed)
-    return Status::error("release speed " + std::to_string(linear_velocity.norm()) +
-                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
-  if (angular_velocity.norm() > w.options.max_angular_speed)
-    return Status::error("release spin " + std::to_string(angular_velocity.norm()) +
-                         " rad/s exceeds the limit of " +
-                         std::to_string(w.options.max_angular_speed));
+  if (Status velocity = checkVelocity(w, linear_velocity, angular_velocity, "release "); !velocity)
+    return velocity;
   w.sets.transfer(brick, BrickMode::kDynamic);
   w.scene.setVelocity(brick->handle, linear_velocity, angular_velocity);
   w.contacts.clear();
@@ -398,15 +379,14 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
   const BrickType& type =
       *w.types.find(placement.type.empty() ? w.types.defaultType() : placement.type);
   const OrientedBox box{placement.pose, type.halfExtents()};
-  Eigen::AlignedBox3d bounds;
-  for (const Eigen::Vector3d& corner : corners(box)) bounds.extend(corner);
+  const Eigen::AlignedBox3d extent = bounds(box);
   // A handle no brick has yet: the one this brick would get.
   const BodyHandle handle = w.next_serial;
   const BodyMotion brick{handle, placement.pose.translation(), type.mass, Eigen::Vector3d::Zero(),
                          Eigen::Vector3d::Zero()};
   PlacementReport result;
   const StaticsVerdict statics = judgeAlone(
-      brick, touchingBricks(w, handle, type.friction, box, bounds.min(), bounds.max()), w);
+      brick, touchingBricks(w, handle, type.friction, box, extent.min(), extent.max()), w);
   result.stable = statics.stands;
   result.state = statics.stands ? statics.kind : BrickState::kDynamic;
   result.margin = statics.margin;
@@ -416,7 +396,7 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
   if (statics.stands && w.model) {
     // Its load on the frozen stack below, as the running model sees it.
     const PlacementEvaluation evaluation = w.model->evaluatePlacement(
-        brick, restingContacts(w, handle, type.friction, box, bounds.min(), bounds.max()));
+        brick, restingContacts(w, handle, type.friction, box, extent.min(), extent.max()));
     for (BodyHandle fallen : evaluation.would_fall) result.would_fall.push_back(w.nameOf(fallen));
     if (!result.would_fall.empty()) {
       result.stable = false;

@@ -16,32 +16,30 @@ namespace {
 /// can push it into another (a corner of brick and table).
 constexpr int kBlockingRounds = 3;
 
+/// One step of the hand: where it gets to, and the move and turn that take
+/// it there.
+struct HandStep {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d move = Eigen::Vector3d::Zero();  ///< [m]
+  Eigen::AngleAxisd turn = Eigen::AngleAxisd::Identity();
+};
+
 /// One step from `from` toward `to`, no farther than `max_distance` [m]
 /// and `max_angle` [rad].
-Eigen::Isometry3d stepToward(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to,
-                             double max_distance, double max_angle) {
-  Eigen::Isometry3d next = from;
-  Eigen::Vector3d move = to.translation() - from.translation();
-  if (move.norm() > max_distance) move *= max_distance / move.norm();
-  next.translation() += move;
-  Eigen::AngleAxisd turn(Eigen::Quaterniond(to.linear() * from.linear().transpose()));
-  if (turn.angle() > M_PI) turn = Eigen::AngleAxisd(2.0 * M_PI - turn.angle(), -turn.axis());
-  turn.angle() = std::min(turn.angle(), max_angle);
-  next.linear() = (Eigen::Quaterniond(turn) * Eigen::Quaterniond(from.linear()))
-                      .normalized()
-                      .toRotationMatrix();
-  return next;
-}
-
-/// The bounds of `box` grown by `margin` [m].
-void boundsOf(const OrientedBox& box, double margin, Eigen::Vector3d* low, Eigen::Vector3d* high) {
-  *low = *high = box.pose.translation();
-  for (const Eigen::Vector3d& corner : corners(box)) {
-    *low = low->cwiseMin(corner);
-    *high = high->cwiseMax(corner);
-  }
-  *low -= Eigen::Vector3d::Constant(margin);
-  *high += Eigen::Vector3d::Constant(margin);
+HandStep stepToward(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to, double max_distance,
+                    double max_angle) {
+  HandStep step;
+  step.move = to.translation() - from.translation();
+  if (step.move.norm() > max_distance) step.move *= max_distance / step.move.norm();
+  step.turn = Eigen::AngleAxisd(Eigen::Quaterniond(to.linear() * from.linear().transpose()));
+  if (step.turn.angle() > M_PI)
+    step.turn = Eigen::AngleAxisd(2.0 * M_PI - step.turn.angle(), -step.turn.axis());
+  step.turn.angle() = std::min(step.turn.angle(), max_angle);
+  step.pose.translation() = from.translation() + step.move;
+  step.pose.linear() = (Eigen::Quaterniond(step.turn) * Eigen::Quaterniond(from.linear()))
+                           .normalized()
+                           .toRotationMatrix();
+  return step;
 }
 
 /// Pushes `pose` of the held brick out of the frozen bricks in `blocking`,
@@ -62,12 +60,10 @@ void pushOut(const WorldState& w, const BrickRecord& held, const std::vector<Bod
       moved = true;
     }
     // The floor is a plane: nothing may sink below it.
-    const OrientedBox box{*pose, held.type.halfExtents()};
-    Eigen::Vector3d low, high;
-    boundsOf(box, 0.0, &low, &high);
+    const double lowest = bounds(OrientedBox{*pose, held.type.halfExtents()}).min().z();
     const double floor = -w.options.table.height;
-    if (low.z() < floor) {
-      pose->translation().z() += floor - low.z();
+    if (lowest < floor) {
+      pose->translation().z() += floor - lowest;
       moved = true;
     }
     if (!moved) return;
@@ -82,24 +78,20 @@ void moveHeldBricks(WorldState* w) {
   // A copy: an impact may change the sets.
   const std::vector<BrickRecord*> held = w->sets.held();
   for (BrickRecord* brick : held) {
-    const Eigen::Isometry3d from = w->scene.pose(brick->handle);
-    Eigen::Isometry3d to = stepToward(from, brick->held_target, limits.max_linear_speed * dt,
-                                      limits.max_angular_speed * dt);
-    const Eigen::AngleAxisd turn(Eigen::Quaterniond(to.linear() * from.linear().transpose()));
-    Striker striker{brick->handle,
-                    std::numeric_limits<double>::infinity(),
-                    to,
-                    (to.translation() - from.translation()) / dt,
-                    turn.axis() * (turn.angle() / dt),
-                    brick->type.restitution};
+    const HandStep step = stepToward(w->scene.pose(brick->handle), brick->held_target,
+                                     limits.max_linear_speed * dt, limits.max_angular_speed * dt);
+    Eigen::Isometry3d to = step.pose;
+    Striker striker{
+        brick->handle,  std::numeric_limits<double>::infinity(),     to,
+        step.move / dt, step.turn.axis() * (step.turn.angle() / dt), brick->type.restitution};
     if (!striker.spin.allFinite()) striker.spin.setZero();
 
     std::vector<BodyHandle> near;
     if (w->model) {
-      Eigen::Vector3d low, high;
-      boundsOf(OrientedBox{to, brick->type.halfExtents()}, w->options.stability.contact_distance,
-               &low, &high);
-      near = w->dormant.near(low, high);
+      const Eigen::AlignedBox3d reach = bounds(OrientedBox{to, brick->type.halfExtents()});
+      const Eigen::Vector3d margin =
+          Eigen::Vector3d::Constant(w->options.stability.contact_distance);
+      near = w->dormant.near(reach.min() - margin, reach.max() + margin);
     }
     std::vector<Impact> impacts;
     std::vector<double> overlaps;

@@ -28,16 +28,10 @@ double restitutionOf(const WorldState& w, BodyHandle handle) {
   return isGround(handle) ? w.options.table.restitution : w.bricks.find(handle)->type.restitution;
 }
 
-/// The point of `box` nearest `point` [m].
-Eigen::Vector3d clampInto(const OrientedBox& box, const Eigen::Vector3d& point) {
-  const Eigen::Vector3d local = box.pose.inverse() * point;
-  return box.pose * local.cwiseMax(-box.half_extents).cwiseMin(box.half_extents);
-}
-
 /// The interval [low, high] of `box` projected on the unit `axis` [m].
 Eigen::Vector2d extentAlong(const OrientedBox& box, const Eigen::Vector3d& axis) {
   const double centre = box.pose.translation().dot(axis);
-  const double reach = (box.pose.linear().transpose() * axis).cwiseAbs().dot(box.half_extents);
+  const double reach = projectedRadius(box, axis);
   return Eigen::Vector2d(centre - reach, centre + reach);
 }
 
@@ -57,12 +51,8 @@ double overlapAcross(const OrientedBox& a, const OrientedBox& b, const Eigen::Ve
 /// Whether `brick` at `box` would sink into any brick but itself and `except`.
 bool overlapsOthers(const WorldState& w, BodyHandle brick, BodyHandle except,
                     const OrientedBox& box) {
-  Eigen::Vector3d low = box.pose.translation(), high = low;
-  for (const Eigen::Vector3d& corner : corners(box)) {
-    low = low.cwiseMin(corner);
-    high = high.cwiseMax(corner);
-  }
-  std::vector<BodyHandle> others = w.dormant.near(low, high);
+  const Eigen::AlignedBox3d extent = bounds(box);
+  std::vector<BodyHandle> others = w.dormant.near(extent.min(), extent.max());
   for (const BrickRecord* mover : w.sets.movers()) others.push_back(mover->handle);
   for (const BrickRecord* held : w.sets.held()) others.push_back(held->handle);
   others.push_back(kTableHandle);
@@ -112,7 +102,7 @@ bool findImpact(const WorldState& w, const Striker& striker, BodyHandle struck, 
   const Eigen::Vector3d on_plane =
       centre - (centre - nearest.on_b).dot(nearest.normal) * nearest.normal;
   const OrientedBox struck_box = w.boxOf(struck);
-  const Eigen::Vector3d point = clampInto(struck_box, on_plane);
+  const Eigen::Vector3d point = nearestPointIn(struck_box, on_plane);
   const Eigen::Vector3d velocity = striker.velocity + striker.spin.cross(point - centre);
   const double closing_speed = -velocity.dot(nearest.normal);
   if (overlap) *overlap = std::max(0.0, -nearest.distance);

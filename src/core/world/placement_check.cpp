@@ -27,6 +27,34 @@ bool validId(const std::string& id) {
 
 }  // namespace
 
+Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose,
+                 const Eigen::Vector3d& half_extents, const std::string& prefix) {
+  if (!pose.translation().allFinite())
+    return Status::error(prefix + "position is not finite: " + formatVector(pose.translation()));
+  if (!isRotation(pose.linear()))
+    return Status::error(prefix +
+                         "orientation is not a proper rotation (NaN, Inf or not orthonormal)");
+  const double lowest = bounds(OrientedBox{pose, half_extents}).min().z();
+  if (lowest < -w.options.overlap_tolerance)
+    return Status::error(prefix + "pose puts the brick " + millimetres(-lowest) +
+                         " below the table top (z = 0)");
+  return Status::success();
+}
+
+Status checkVelocity(const WorldState& w, const Eigen::Vector3d& linear,
+                     const Eigen::Vector3d& angular, const std::string& prefix) {
+  if (!linear.allFinite() || !angular.allFinite())
+    return Status::error(prefix + "velocity is not finite");
+  if (linear.norm() > w.options.max_linear_speed)
+    return Status::error(prefix + "linear speed " + std::to_string(linear.norm()) +
+                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
+  if (angular.norm() > w.options.max_angular_speed)
+    return Status::error(prefix + "angular speed " + std::to_string(angular.norm()) +
+                         " rad/s exceeds the limit of " +
+                         std::to_string(w.options.max_angular_speed));
+  return Status::success();
+}
+
 Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   if (!p.id.empty()) {
     if (!validId(p.id))
@@ -41,29 +69,13 @@ Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   if (!type)
     return Status::error("unknown brick type '" + type_name +
                          "' (known: " + joinNames(w.types.names()) + ")");
-  if (!p.pose.translation().allFinite())
-    return Status::error("position is not finite: " + formatVector(p.pose.translation()));
-  if (!isRotation(p.pose.linear()))
-    return Status::error("orientation is not a proper rotation (NaN, Inf or not orthonormal)");
-  if (!p.linear_velocity.allFinite() || !p.angular_velocity.allFinite())
-    return Status::error("velocity is not finite");
-  if (p.linear_velocity.norm() > w.options.max_linear_speed)
-    return Status::error("linear speed " + std::to_string(p.linear_velocity.norm()) +
-                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
-  if (p.angular_velocity.norm() > w.options.max_angular_speed)
-    return Status::error("angular speed " + std::to_string(p.angular_velocity.norm()) +
-                         " rad/s exceeds the limit of " +
-                         std::to_string(w.options.max_angular_speed));
+  if (Status pose = checkPose(w, p.pose, type->halfExtents()); !pose) return pose;
+  if (Status velocity = checkVelocity(w, p.linear_velocity, p.angular_velocity); !velocity)
+    return velocity;
 
   const OrientedBox box{p.pose, type->halfExtents()};
-  Eigen::Vector3d low = box.pose.translation(), high = low;
-  for (const Eigen::Vector3d& corner : corners(box)) {
-    low = low.cwiseMin(corner);
-    high = high.cwiseMax(corner);
-  }
-  if (low.z() < -w.options.overlap_tolerance)
-    return Status::error("pose puts the brick " + millimetres(-low.z()) +
-                         " below the table top (z = 0)");
+  const Eigen::AlignedBox3d extent = bounds(box);
+  const Eigen::Vector3d low = extent.min(), high = extent.max();
   // Candidates: every brick that is not frozen, and the frozen ones whose
   // boxes come near, in placement order.
   std::vector<BodyHandle> candidates;

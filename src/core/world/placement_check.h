@@ -11,6 +11,17 @@ namespace brick_stack_sim {
 
 struct WorldState;
 
+/// A brick of `half_extents` [m] at `pose`: a finite position, a proper
+/// rotation, not below the table top. Messages start with `prefix`
+/// ("target "): "target position is not finite: ...".
+Status checkPose(const WorldState& world, const Eigen::Isometry3d& pose,
+                 const Eigen::Vector3d& half_extents, const std::string& prefix = "");
+
+/// Velocities [m/s], [rad/s]: finite and within the world's speed limits.
+/// Messages start with `prefix` ("release ").
+Status checkVelocity(const WorldState& world, const Eigen::Vector3d& linear,
+                     const Eigen::Vector3d& angular, const std::string& prefix = "");
+
 /// Would the world accept this placement? The id (valid, not reserved, not
 /// in use), the type, finite numbers, a proper rotation, speeds within the
 /// limits, not below the table top and not inside another brick. The
@@ -32,8 +43,8 @@ void appendContacts(const WorldState& world, BodyHandle brick, double friction,
 /// before Bullet's first, unconverged steps can rock it. Flush supports
 /// always; for a model that judges leaning, every touching face too, and the
 /// bricks placed at rest since the last step.
-std::vector<PairContact> restingContacts(const WorldState& world, BodyHandle brick,
-                                         double friction, const OrientedBox& box,
-                                         const Eigen::Vector3d& low, const Eigen::Vector3d& high);
+std::vector<PairContact> restingContacts(const WorldState& world, BodyHandle brick, double friction,
+                                         const OrientedBox& box, const Eigen::Vector3d& low,
+                                         const Eigen::Vector3d& high);
 
 }  // namespace brick_stack_sim

@@ -16,8 +16,9 @@ struct StaticsVerdict {
   bool stands = false;
   BrickState kind = BrickState::kDynamic;  ///< kStable, or kLeaning when its COM is not over
                                            ///< what carries it from below.
-  double margin = 0.0;               ///< COM against the hull of its supports from below [m].
-  double acceleration_margin = 0.0;  ///< Least sideways acceleration (+-x, +-y) that moves it [m/s^2].
+  double margin = 0.0;                     ///< COM against the hull of its supports from below [m].
+  double acceleration_margin =
+      0.0;  ///< Least sideways acceleration (+-x, +-y) that moves it [m/s^2].
   std::vector<BodyHandle> touching;  ///< In handle order.
   std::string reason;
 };

@@ -16,6 +16,15 @@ struct OrientedBox {
 /// The eight corners of a box in world coordinates [m].
 std::array<Eigen::Vector3d, 8> corners(const OrientedBox& box);
 
+/// The axis-aligned bounds of a box [m].
+Eigen::AlignedBox3d bounds(const OrientedBox& box);
+
+/// Half the length of the box's projection on the unit `axis` [m].
+double projectedRadius(const OrientedBox& box, const Eigen::Vector3d& axis);
+
+/// The point of `box` (inside or on it) nearest `point` [m].
+Eigen::Vector3d nearestPointIn(const OrientedBox& box, const Eigen::Vector3d& point);
+
 /// Separating-axis distance of two boxes [m]: the largest gap along any of the
 /// 15 candidate axes. Positive: the boxes are apart (a lower bound of their
 /// distance). Zero: they touch. Negative: they overlap, and its magnitude is the
