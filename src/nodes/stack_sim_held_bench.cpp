@@ -14,6 +14,7 @@
 #include <string>
 
 #include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 
 using namespace brick_stack_sim;
@@ -36,28 +37,18 @@ BrickPlacement brickAt(const std::string& id, const Eigen::Vector3d& position, d
   return p;
 }
 
-/// The towers, each two KAPLAs per layer crosswise, all frozen when placed.
-Status buildTowers(const BrickType& kapla, BrickWorld* world) {
-  const double offset = 0.5 * (kapla.size.x() - kapla.size.y());
-  const double thickness = kapla.size.z();
-  for (int tx = 0; tx < kTowersPerSide; ++tx) {
-    for (int ty = 0; ty < kTowersPerSide; ++ty) {
-      const Eigen::Vector2d centre((tx - 2) * kTowerSpacing, (ty - 2) * kTowerSpacing);
-      for (int layer = 0; layer < kLayers; ++layer) {
-        for (int slot = 0; slot < 2; ++slot) {
-          const double across = slot == 0 ? -offset : offset;
-          const bool along_x = layer % 2 == 0;
-          const Eigen::Vector3d at(centre.x() + (along_x ? 0.0 : across),
-                                   centre.y() + (along_x ? across : 0.0),
-                                   thickness * (layer + 0.5));
-          const std::string id = "t" + std::to_string(tx) + "_" + std::to_string(ty) + "_" +
-                                 std::to_string(2 * layer + slot);
-          if (Status placed = world->addBrick(brickAt(id, at, along_x ? 0.0 : M_PI / 2)); !placed)
-            return placed;
-        }
-      }
-    }
-  }
+/// The towers (the `tower` generator on a grid), all frozen when placed.
+Status buildTowers(BrickWorld* world) {
+  TowerParams params;
+  params.layers = kLayers;
+  params.grid_x = params.grid_y = kTowersPerSide;
+  params.spacing = kTowerSpacing;
+  params.origin = Eigen::Vector2d::Constant(-0.5 * (kTowersPerSide - 1) * kTowerSpacing);
+  std::vector<ScheduledBrick> towers;
+  if (Status generated = generateTower(params, world->types(), &towers); !generated)
+    return generated;
+  for (const ScheduledBrick& brick : towers)
+    if (Status placed = world->addBrick(brick.placement); !placed) return placed;
   return Status::success();
 }
 
@@ -129,7 +120,7 @@ int main(int argc, char** argv) {
           return 1;
         }
         if (scene != "empty_held_sweep") {
-          if (Status built = buildTowers(kapla, world.get()); !built) {
+          if (Status built = buildTowers(world.get()); !built) {
             std::cerr << built.message << "\n";
             return 1;
           }

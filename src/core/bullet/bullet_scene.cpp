@@ -298,11 +298,8 @@ void BulletScene::moveKinematic(BodyHandle handle, const Eigen::Isometry3d& pose
 }
 
 void BulletScene::moveStatic(BodyHandle handle, const Eigen::Isometry3d& pose) {
-  btRigidBody& body = impl_->rigid(handle);
-  const btTransform transform = convertEigenToBt(pose);
-  body.setWorldTransform(transform);
-  body.setInterpolationWorldTransform(transform);
-  if (impl_->body(handle).in_world) impl_->world->updateSingleAabb(&body);
+  restoreAtRest(handle, pose);
+  if (impl_->body(handle).in_world) impl_->world->updateSingleAabb(&impl_->rigid(handle));
 }
 
 bool BulletScene::closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, BodyHandle b,

@@ -16,7 +16,7 @@ constexpr double kVerticalBlow = 1e-6;
 
 }  // namespace
 
-ImpactJudgement judgeImpact(const StruckBrick& brick, const Blow& blow, double min_slide) {
+ImpactJudgement judgeImpact(const StruckBrick& brick, const Impact& blow, double min_slide) {
   ImpactJudgement result;
   const bool held = !std::isfinite(blow.striker_mass);
   // A hand gives the struck brick the striker's whole closing speed; a free

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "brick_stack_sim/core/geometry/polygon2d.h"
+#include "stability/stability_model.h"
 
 namespace brick_stack_sim {
 
@@ -25,17 +26,6 @@ struct StruckBrick {
   Polygon2d support_hull;                               ///< Where it rests, from above [m].
   double support_height = 0.0;                          ///< [m]
   double friction = 0.0;  ///< Coulomb coefficient of its supports, the weakest [-].
-};
-
-/// One blow of a striker on a struck brick.
-struct Blow {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< Where they meet [m], world.
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< Unit, from struck towards striker.
-  double closing_speed = 0.0;                         ///< Along the normal [m/s], > 0.
-  /// [kg]; infinite for a held brick (a hand does not give way).
-  double striker_mass = 0.0;
-  double restitution = 0.0;  ///< Of the pair [-].
-  double gravity = 9.81;     ///< [m/s^2]
 };
 
 /// What the blow does to the struck brick.
@@ -55,9 +45,10 @@ struct ImpactJudgement {
   bool moves() const { return slides || tips; }
 };
 
-/// Judges `blow` on `brick`. A slide shorter than `min_slide` [m] is
-/// absorbed (a gentle touch moves nothing a person could see).
-ImpactJudgement judgeImpact(const StruckBrick& brick, const Blow& blow, double min_slide);
+/// Judges the blow of `impact` on `brick`. A slide shorter than
+/// `min_slide` [m] is absorbed (a gentle touch moves nothing a person could
+/// see).
+ImpactJudgement judgeImpact(const StruckBrick& brick, const Impact& impact, double min_slide);
 
 /// "delivered 1.49 mJ, slides 25.3 mm, tipping needs 0.98 mJ (gets 0.15 mJ)".
 std::string describeImpact(const ImpactJudgement& judgement);

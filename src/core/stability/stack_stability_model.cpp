@@ -111,9 +111,7 @@ void StackStabilityModel::judgeImpacts(const std::vector<Impact>& impacts,
       for (const SupportPatch& patch : *patches)
         struck.friction = std::min(struck.friction, patch.friction);
     if (!std::isfinite(struck.friction)) struck.friction = 0.0;
-    const Blow blow{impact.point,        impact.normal,      impact.closing_speed,
-                    impact.striker_mass, impact.restitution, impact.gravity};
-    const ImpactJudgement judgement = judgeImpact(struck, blow, options_.impact_min_slide);
+    const ImpactJudgement judgement = judgeImpact(struck, impact, options_.impact_min_slide);
     response.impulse = judgement.impulse;
     response.delivered_energy = judgement.delivered_energy;
     const bool held = !std::isfinite(impact.striker_mass);
