@@ -62,14 +62,23 @@ Status fromMsg(const geometry_msgs::Pose& msg, const std::string& field, Eigen::
   return Status::success();
 }
 
+Status fromMsg(const geometry_msgs::Twist& msg, const std::string& field, Eigen::Vector3d* linear,
+               Eigen::Vector3d* angular) {
+  Eigen::Vector3d linear_in, angular_in;
+  if (Status s = fromMsg(msg.linear, field + ".linear", &linear_in); !s) return s;
+  if (Status s = fromMsg(msg.angular, field + ".angular", &angular_in); !s) return s;
+  *linear = linear_in;
+  *angular = angular_in;
+  return Status::success();
+}
+
 Status fromMsg(const PlaceBrick::Request& request, BrickPlacement* placement) {
   BrickPlacement result;
   result.id = request.id;
   result.type = request.type;
   if (Status s = fromMsg(request.pose, "pose", &result.pose); !s) return s;
-  if (Status s = fromMsg(request.twist.linear, "twist.linear", &result.linear_velocity); !s)
-    return s;
-  if (Status s = fromMsg(request.twist.angular, "twist.angular", &result.angular_velocity); !s)
+  if (Status s = fromMsg(request.twist, "twist", &result.linear_velocity, &result.angular_velocity);
+      !s)
     return s;
   *placement = std::move(result);
   return Status::success();
@@ -178,8 +187,7 @@ static_assert(StabilityEvent::REMOVED == static_cast<int>(SimEventKind::kRemoved
 static_assert(StabilityEvent::NONFINITE == static_cast<int>(SimEventKind::kNonFinite),
               "event kind");
 static_assert(StabilityEvent::GRASPED == static_cast<int>(SimEventKind::kGrasped), "event kind");
-static_assert(StabilityEvent::RELEASED == static_cast<int>(SimEventKind::kReleased),
-              "event kind");
+static_assert(StabilityEvent::RELEASED == static_cast<int>(SimEventKind::kReleased), "event kind");
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

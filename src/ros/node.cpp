@@ -451,9 +451,7 @@ bool SimNode::graspBrick(GraspBrick::Request& request, GraspBrick::Response& res
 
 bool SimNode::releaseBrick(ReleaseBrick::Request& request, ReleaseBrick::Response& response) {
   Eigen::Vector3d linear, angular;
-  if (Status converted = fromMsg(request.twist.linear, "twist.linear", &linear); !converted)
-    return refuse(kReleaseBrickService, converted, &response);
-  if (Status converted = fromMsg(request.twist.angular, "twist.angular", &angular); !converted)
+  if (Status converted = fromMsg(request.twist, "twist", &linear, &angular); !converted)
     return refuse(kReleaseBrickService, converted, &response);
   if (Status released = simulation_->world().releaseBrick(request.id, linear, angular); !released)
     return refuse(kReleaseBrickService, released, &response);

@@ -38,6 +38,11 @@ Status fromMsg(const geometry_msgs::Point& msg, const std::string& field, Eigen:
 Status fromMsg(const geometry_msgs::Vector3& msg, const std::string& field,
                Eigen::Vector3d* vector);
 
+/// A twist's linear [m/s] and angular [rad/s] velocity, refused when not
+/// finite (the message names `field`.linear or `field`.angular).
+Status fromMsg(const geometry_msgs::Twist& msg, const std::string& field, Eigen::Vector3d* linear,
+               Eigen::Vector3d* angular);
+
 /// A PlaceBrick request as a placement: pose [m], linear [m/s] and angular
 /// [rad/s] velocity in the world frame. Empty id and type are passed on empty
 /// (the world picks brick_<n> and the default type).
