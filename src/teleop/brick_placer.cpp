@@ -229,18 +229,9 @@ void BrickPlacer::graspNearest(const FeedbackConstPtr& feedback) {
     return;
   }
   if (!takeFeedbackPose(feedback)) return;
-  std::vector<Brick> bricks;
-  if (!sim_.getBricks(&bricks)) return;
-  std::vector<Eigen::Vector3d> centres;
-  for (const Brick& brick : bricks)
-    centres.emplace_back(brick.pose.position.x, brick.pose.position.y, brick.pose.position.z);
-  const int nearest = nearestIndex(ghost_pose_.translation(), centres);
-  if (nearest < 0) {
-    ROS_WARN("%s: there is no brick to grasp", kGraspEntry);
-    return;
-  }
-  const Brick& brick = bricks[nearest];
-  if (!sim_.graspBrick(brick.id)) return;
+  const std::optional<Brick> grasped = sim_.graspNearest(ghost_pose_.translation(), kGraspEntry);
+  if (!grasped) return;
+  const Brick& brick = *grasped;
   // The ghost jumps onto the brick, so that the first drag moves the brick
   // from where it is rather than to where the ghost was.
   Eigen::Isometry3d pose;

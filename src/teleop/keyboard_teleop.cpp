@@ -8,7 +8,6 @@
 #include <visualization_msgs/Marker.h>
 
 #include "brick_stack_sim/ros/conversions.h"
-#include "brick_stack_sim/teleop/placement_geometry.h"
 
 namespace brick_stack_sim {
 namespace teleop {
@@ -92,18 +91,9 @@ void KeyboardTeleop::grasp() {
     ROS_WARN("grasp: %s is already held (one at a time); release it first", sim_.held()->c_str());
     return;
   }
-  std::vector<Brick> bricks;
-  if (!sim_.getBricks(&bricks)) return;
-  std::vector<Eigen::Vector3d> centres;
-  for (const Brick& brick : bricks)
-    centres.emplace_back(brick.pose.position.x, brick.pose.position.y, brick.pose.position.z);
-  const int nearest = nearestIndex(cursor_.position, centres);
-  if (nearest < 0) {
-    ROS_WARN("grasp: there is no brick to grasp");
-    return;
-  }
-  const Brick& brick = bricks[nearest];
-  if (!sim_.graspBrick(brick.id)) return;
+  const std::optional<Brick> grasped = sim_.graspNearest(cursor_.position, "grasp");
+  if (!grasped) return;
+  const Brick& brick = *grasped;
   // The cursor jumps onto the brick: the next key moves the brick by one
   // step from where it is, not to where the cursor was.
   Eigen::Isometry3d pose;

@@ -8,6 +8,7 @@
 #include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/ReleaseBrick.h"
+#include "brick_stack_sim/teleop/placement_geometry.h"
 
 namespace brick_stack_sim {
 namespace teleop {
@@ -89,6 +90,22 @@ bool SimClient::graspBrick(const std::string& id) {
   if (!call(grasp_brick_, service)) return false;
   held_ = id;
   return true;
+}
+
+std::optional<Brick> SimClient::graspNearest(const Eigen::Vector3d& point,
+                                             const std::string& action) {
+  std::vector<Brick> bricks;
+  if (!getBricks(&bricks)) return std::nullopt;
+  std::vector<Eigen::Vector3d> centres;
+  for (const Brick& brick : bricks)
+    centres.emplace_back(brick.pose.position.x, brick.pose.position.y, brick.pose.position.z);
+  const int nearest = nearestIndex(point, centres);
+  if (nearest < 0) {
+    ROS_WARN("%s: there is no brick to grasp", action.c_str());
+    return std::nullopt;
+  }
+  if (!graspBrick(bricks[nearest].id)) return std::nullopt;
+  return bricks[nearest];
 }
 
 bool SimClient::releaseHeld(const geometry_msgs::Twist& twist) {

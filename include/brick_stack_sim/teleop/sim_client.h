@@ -12,6 +12,8 @@
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
+#include <Eigen/Core>
+
 #include "brick_stack_sim/Brick.h"
 
 namespace brick_stack_sim {
@@ -38,6 +40,10 @@ class SimClient {
   bool placeBrick(const std::string& type, const geometry_msgs::Pose& pose, std::string* id);
   /// ~grasp_brick; on success the brick is the held one.
   bool graspBrick(const std::string& id);
+  /// ~grasp_brick of the brick whose centre is nearest `point` [m]; the
+  /// grasped brick, or nothing (logged, with `action` naming what the user
+  /// asked for) when there is none or the simulator refuses.
+  std::optional<Brick> graspNearest(const Eigen::Vector3d& point, const std::string& action);
   /// ~release_brick of the held brick with `twist` [m/s, rad/s]. Whatever
   /// the answer, a brick the simulator no longer holds is forgotten.
   bool releaseHeld(const geometry_msgs::Twist& twist);
