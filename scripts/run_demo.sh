@@ -11,4 +11,4 @@ source devel/setup.bash
 export ROS_LOG_DIR="${workspace}/log"
 # A private master port keeps the demo off any master already running here.
 export ROS_MASTER_URI="http://localhost:${DEMO_MASTER_PORT:-11411}"
-exec roslaunch --screen brick_stack_sim demo.launch "$@"
+exec roslaunch brick_stack_sim demo.launch "$@"

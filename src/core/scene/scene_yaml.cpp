@@ -101,6 +101,8 @@ constexpr GeneratorEntry kGenerators[] = {
     {"pile", &readPileGenerator},
     {"aframe", &readAFrameGenerator},
     {"card_house", &readCardHouseGenerator},
+    {"impact", &readImpactGenerator},
+    {"kapla_record", &readKaplaRecordGenerator},
 };
 
 void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
@@ -144,8 +146,14 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
   try {
     const YAML::Node root = YAML::Load(yaml_text);
     if (!root.IsMap()) return Status::error("scene '" + name + "': expected a map at the top");
-    requireKnownKeys(root, "scene", {"name", "table", "types", "generator", "bricks"});
+    requireKnownKeys(root, "scene", {"name", "table", "types", "generator", "bricks", "expect"});
     result.name = readString(root, "name", "scene", name);
+    const std::string expect = readString(root, "expect", "scene", "stands");
+    if (expect == "collapses") {
+      result.expect = ExpectedOutcome::kCollapses;
+    } else if (expect != "stands") {
+      fail("expect", "'" + expect + "': expected 'stands' or 'collapses'");
+    }
     if (root["table"]) result.table = readTable(root["table"]);
     if (root["types"]) {
       if (!root["types"].IsMap()) fail("types", "expected a map of name: {size, mass, ...}");

@@ -105,6 +105,42 @@ struct CardHouseParams {
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the house, seen from above [m].
 };
 
+/// Parameters of the `impact` generator (thesis 4.1, "4 stack impact"): a
+/// tower built brick by brick, then one brick thrown at one of its layers.
+struct ImpactParams {
+  TowerParams tower;   ///< The tower struck (13 layers of two in the thesis).
+  int layer = 13;      ///< Layer struck, 1 = the lowest.
+  double speed = 1.0;  ///< Speed of the thrown brick [m/s], square to the face it hits.
+  /// Time from the last tower brick to the throw [s]: the tower has frozen.
+  double delay = 1.0;
+  /// Distance from the struck face at the throw [m]. A slow throw starts
+  /// nearer (at most kMaxImpactFlight of flight), so that gravity has not
+  /// pulled it below the layer when it arrives.
+  double gap = 0.004;
+};
+
+/// Longest flight of the `impact` generator's throw [s]: a KAPLA falls
+/// 0.02 mm in that time, far less than the 0.3 mm it is aimed above the
+/// layer's centre.
+constexpr double kMaxImpactFlight = 0.002;
+/// The thrown brick flies this much above the struck layer's centre [m]: a
+/// throw exactly flush would catch the edges of the layers above and below
+/// once gravity has pulled it down by a hair.
+constexpr double kImpactAimAbove = 0.0003;
+/// Id of the `impact` generator's thrown brick.
+constexpr char kStrikerId[] = "striker";
+
+/// Parameters of the `kapla_record` generator: a tall hollow tower of square
+/// floors, each two crossed layers of two planks (the 4-stack), built one
+/// plank per `interval`.
+struct KaplaRecordParams {
+  int floors = 133;
+  std::string type;
+  double start = 0.0;                                ///< [s]
+  double interval = 0.0;                             ///< [s]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the tower [m].
+};
+
 /// Appends a tower: layers alternate between bricks along x and along y, each
 /// layer resting across the ends of the one below.
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
@@ -129,6 +165,17 @@ Status generateAFrame(const AFrameParams& params, const BrickTypeLibrary& types,
 /// Appends a card house on the table, from the lowest row up.
 Status generateCardHouse(const CardHouseParams& params, const BrickTypeLibrary& types,
                          std::vector<ScheduledBrick>* bricks);
+
+/// Appends a tower and, after it, a brick thrown at the outer long face of
+/// the first brick of `layer`: even layers (counted from 0) lie along x and
+/// are struck from -y, odd ones along y and are struck from -x, the thrown
+/// brick lying parallel to the one it strikes.
+Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
+                      std::vector<ScheduledBrick>* bricks);
+
+/// Appends a kapla_record tower (2 x floors layers of the `tower` generator).
+Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibrary& types,
+                           std::vector<ScheduledBrick>* bricks);
 
 /// Appends a pile drop.
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,

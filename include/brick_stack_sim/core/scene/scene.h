@@ -17,6 +17,14 @@ struct ScheduledBrick {
   double at = 0.0;  ///< Placement time [s].
 };
 
+/// What a scene's author expects of the structure it builds; a planner
+/// client (blueprint_builder) fails a build that does otherwise. Bricks
+/// placed with a velocity (thrown) are not part of the structure.
+enum class ExpectedOutcome {
+  kStands,     ///< Every brick comes to rest where it was placed and stays.
+  kCollapses,  ///< Some brick falls: a demonstration of a stability limit.
+};
+
 /// A scene (DESIGN.md section 4): an optional table override, optional extra
 /// brick types, and bricks with placement times, sorted by `at` (stable).
 /// `generator` may be one generator or a list of them.
@@ -25,6 +33,7 @@ struct Scene {
   std::optional<TableOptions> table;
   std::vector<BrickType> types;
   std::vector<ScheduledBrick> bricks;
+  ExpectedOutcome expect = ExpectedOutcome::kStands;  ///< YAML `expect: stands | collapses`.
 };
 
 /// Parses a scene from YAML text. `types` resolves the generators' brick sizes

@@ -40,6 +40,10 @@ void readAFrameGenerator(const YAML::Node& node, const std::string& where,
                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readCardHouseGenerator(const YAML::Node& node, const std::string& where,
                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readImpactGenerator(const YAML::Node& node, const std::string& where,
+                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readKaplaRecordGenerator(const YAML::Node& node, const std::string& where,
+                              const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 

@@ -1,0 +1,88 @@
+#pragma once
+// blueprint_builder: the reference of how a planner uses the simulator. It
+// reads a scene, places its bricks through ~place_brick at their times,
+// watches each come to rest through ~get_bricks, and tells whether the
+// structure did what the scene expects (BuildLedger).
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+#include <ros/service_client.h>
+
+#include "brick_stack_sim/core/scene/scene.h"
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/planner/build_ledger.h"
+
+namespace brick_stack_sim {
+namespace planner {
+
+/// The builder's private parameters (README, "blueprint_builder").
+struct BuilderOptions {
+  std::string scene;  ///< A name in `scene_dirs` or a path.
+  std::vector<std::string> scene_dirs;
+  std::string sim = "/brick_sim";  ///< Namespace of the simulator's services.
+  std::string types_urdf;          ///< Brick types; must be the simulator's.
+  std::string materials_yaml;
+  /// How long past its placement a brick may take to come to rest [s] (sim
+  /// time) before the builder goes on without it and says so.
+  double settle_timeout = 3.0;
+  double final_wait = 3.0;     ///< Watched after the last placement [s] (sim time).
+  double poll_period = 0.1;    ///< Between two looks at ~get_bricks [s] (sim time).
+  double service_wait = 60.0;  ///< For the simulator's services to come up [s] (wall time).
+  LedgerOptions ledger;
+};
+
+/// Reads and checks the parameters of `private_nh` over the defaults; data
+/// paths left empty come from `package_dir`. A bad value is refused with a
+/// message naming it and `*options` is left unchanged.
+Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& package_dir,
+                          BuilderOptions* options);
+
+/// What a build came to.
+struct BuildOutcome {
+  BuildSummary summary;
+  bool met = false;     ///< The structure did what the scene expects.
+  std::string verdict;  ///< Why, naming the brick that fell.
+  std::string summary_line;
+};
+
+class BlueprintBuilder {
+ public:
+  /// Progress goes to `progress` (one line per event).
+  BlueprintBuilder(ros::NodeHandle nh, BuilderOptions options, std::FILE* progress = stdout);
+
+  /// Loads options.scene with the options' brick types.
+  Status loadScene(Scene* scene) const;
+
+  /// Builds `scene` on the simulator, which should hold nothing of it yet.
+  /// Fails only when the simulator cannot be reached or ROS shuts down; a
+  /// structure that falls is a successful run with `met` false.
+  Status build(const Scene& scene, BuildOutcome* outcome);
+
+  const BuildLedger& ledger() const { return ledger_; }
+
+ private:
+  /// Places bricks [first, last) of the scene at once (paused in between, so
+  /// that two leaning bricks arrive together).
+  Status placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first, std::size_t last);
+  /// Looks at ~get_bricks and reports what fell.
+  Status observe();
+  /// Watches until `until` (sim time) and, when `group` is not empty, until
+  /// its bricks have come to rest or `settle_until` has passed.
+  Status watch(const ros::Time& until, const std::vector<std::string>& group,
+               const ros::Time& settle_until);
+  bool restedAll(const std::vector<std::string>& ids) const;
+  void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
+
+  ros::NodeHandle nh_;
+  BuilderOptions options_;
+  std::FILE* progress_;
+  BuildLedger ledger_;
+  ros::ServiceClient place_, get_, pause_;
+  ros::Time next_observation_;
+};
+
+}  // namespace planner
+}  // namespace brick_stack_sim

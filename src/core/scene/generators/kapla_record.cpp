@@ -1,0 +1,38 @@
+#include "scene/generators/generator_support.h"
+
+namespace brick_stack_sim {
+
+using scene_yaml::readInt;
+using scene_yaml::readVector;
+using scene_yaml::requireKnownKeys;
+
+Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibrary& types,
+                           std::vector<ScheduledBrick>* bricks) {
+  if (params.floors < 1 || params.floors > 5000)
+    return Status::error("kapla_record floors = " + std::to_string(params.floors) +
+                         ": must be in [1, 5000]");
+  // A floor is a square frame: two planks along x, two across them along y.
+  TowerParams tower;
+  tower.layers = 2 * params.floors;
+  tower.bricks_per_layer = 2;
+  tower.type = params.type;
+  tower.start = params.start;
+  tower.interval = params.interval;
+  tower.origin = params.origin;
+  if (Status built = generateTower(tower, types, bricks); !built)
+    return Status::error("kapla_record: " + built.message);
+  return Status::success();
+}
+
+void readKaplaRecordGenerator(const YAML::Node& node, const std::string& where,
+                              const GeneratorContext& context,
+                              std::vector<ScheduledBrick>* bricks) {
+  requireKnownKeys(node, where, {"name", "floors", "type", "start", "interval", "origin"});
+  KaplaRecordParams params;
+  params.floors = readInt(node, "floors", where, params.floors);
+  params.origin = readVector<2>(node, "origin", where, params.origin);
+  readTypeAndTiming(node, where, &params);
+  failUnless(generateKaplaRecord(params, context.types, bricks), where);
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,227 @@
+#include "brick_stack_sim/planner/blueprint_builder.h"
+
+#include <cmath>
+#include <cstdarg>
+
+#include <ros/service.h>
+#include <std_srvs/SetBool.h>
+
+#include "brick_stack_sim/GetBricks.h"
+#include "brick_stack_sim/PlaceBrick.h"
+#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/ros/conversions.h"
+
+namespace brick_stack_sim {
+namespace planner {
+namespace {
+
+/// A positive, finite time [s] read from `name`, or an error naming it.
+Status readPositive(const ros::NodeHandle& nh, const std::string& name, double* value) {
+  double read = *value;
+  nh.param(name, read, read);
+  if (!std::isfinite(read) || read <= 0.0 || read > 1e6)
+    return Status::error("parameter ~" + name + " = " + std::to_string(read) +
+                         ": must be in (0, 1e6]");
+  *value = read;
+  return Status::success();
+}
+
+ObservedBrick toObserved(const Brick& msg) {
+  ObservedBrick brick;
+  brick.id = msg.id;
+  // The simulator never publishes a non-finite number; a bad quaternion
+  // would leave the identity, which reads as a turned brick: fallen.
+  ros_adapter::fromMsg(msg.pose, "pose", &brick.pose);
+  ros_adapter::fromMsg(msg.twist, "twist", &brick.linear_velocity, &brick.angular_velocity);
+  brick.frozen = msg.state == Brick::STABLE || msg.state == Brick::LEANING;
+  brick.asleep = msg.asleep;
+  brick.fell_off = msg.fell_off;
+  return brick;
+}
+
+bool isThrown(const ScheduledBrick& brick) {
+  return !brick.placement.linear_velocity.isZero() || !brick.placement.angular_velocity.isZero();
+}
+
+}  // namespace
+
+Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& package_dir,
+                          BuilderOptions* options) {
+  BuilderOptions read = *options;
+  private_nh.param("scene", read.scene, read.scene);
+  if (read.scene.empty()) return Status::error("parameter ~scene is empty: name a scene or a path");
+  private_nh.param("sim", read.sim, read.sim);
+  if (read.sim.empty()) return Status::error("parameter ~sim is empty: the simulator's namespace");
+  private_nh.param("types_urdf", read.types_urdf, package_dir + "/urdf/bricks.urdf");
+  private_nh.param("materials_yaml", read.materials_yaml, package_dir + "/config/bricks.yaml");
+  std::vector<std::string> dirs;
+  private_nh.param("scene_dirs", dirs, std::vector<std::string>{package_dir + "/scenes"});
+  read.scene_dirs = dirs;
+  for (const auto& [name, value] :
+       {std::pair<const char*, double*>{"settle_timeout", &read.settle_timeout},
+        {"final_wait", &read.final_wait},
+        {"poll_period", &read.poll_period},
+        {"service_wait", &read.service_wait},
+        {"fall_distance", &read.ledger.fall_distance},
+        {"fall_angle", &read.ledger.fall_angle}}) {
+    if (Status checked = readPositive(private_nh, name, value); !checked) return checked;
+  }
+  *options = read;
+  return Status::success();
+}
+
+BlueprintBuilder::BlueprintBuilder(ros::NodeHandle nh, BuilderOptions options, std::FILE* progress)
+    : nh_(nh), options_(std::move(options)), progress_(progress), ledger_(options_.ledger) {}
+
+Status BlueprintBuilder::loadScene(Scene* scene) const {
+  BrickTypeLibrary types;
+  if (Status loaded = BrickTypeLibrary::load(options_.types_urdf, options_.materials_yaml, &types);
+      !loaded)
+    return loaded;
+  return brick_stack_sim::loadScene(options_.scene, options_.scene_dirs, types, scene);
+}
+
+void BlueprintBuilder::say(const char* format, ...) const {
+  std::fprintf(progress_, "[t=%6.2f s] ", ros::Time::now().toSec());
+  va_list arguments;
+  va_start(arguments, format);
+  std::vfprintf(progress_, format, arguments);
+  va_end(arguments);
+  std::fputc('\n', progress_);
+  std::fflush(progress_);
+}
+
+Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
+  const std::string place_name = options_.sim + "/place_brick";
+  const std::string get_name = options_.sim + "/get_bricks";
+  const std::string pause_name = options_.sim + "/pause";
+  for (const std::string& name : {place_name, get_name, pause_name}) {
+    if (!ros::service::waitForService(name, ros::Duration(options_.service_wait)))
+      return Status::error(name + " did not come up within " +
+                           std::to_string(options_.service_wait) + " s");
+  }
+  place_ = nh_.serviceClient<PlaceBrick>(place_name);
+  get_ = nh_.serviceClient<GetBricks>(get_name);
+  pause_ = nh_.serviceClient<std_srvs::SetBool>(pause_name);
+  // With use_sim_time the clock reads 0 until the simulator's first /clock.
+  if (!ros::Time::waitForValid(ros::WallDuration(options_.service_wait)))
+    return Status::error("no /clock within " + std::to_string(options_.service_wait) +
+                         " s: is the simulator's publish_clock on?");
+
+  const ros::Time start = ros::Time::now();
+  const std::vector<ScheduledBrick>& bricks = scene.bricks;
+  say("building scene %s: %zu bricks over %.1f s", scene.name.c_str(), bricks.size(),
+      bricks.empty() ? 0.0 : bricks.back().at);
+  next_observation_ = start;
+  for (std::size_t first = 0; first < bricks.size() && ros::ok();) {
+    // Bricks meant to arrive together (the two halves of a V) go as one group.
+    std::size_t last = first + 1;
+    while (last < bricks.size() && bricks[last].at == bricks[first].at) ++last;
+    if (Status watched = watch(start + ros::Duration(bricks[first].at), {}, ros::Time()); !watched)
+      return watched;
+    if (Status placed = placeGroup(bricks, first, last); !placed) return placed;
+
+    std::vector<std::string> group;
+    for (std::size_t i = first; i < last; ++i)
+      if (ledger_.find(bricks[i].placement.id) && !isThrown(bricks[i]))
+        group.push_back(bricks[i].placement.id);
+    const ros::Time placed_at = ros::Time::now();
+    const ros::Time next =
+        last < bricks.size() ? start + ros::Duration(bricks[last].at) : placed_at;
+    if (Status watched = watch(next, group, placed_at + ros::Duration(options_.settle_timeout));
+        !watched)
+      return watched;
+    for (const std::string& id : group)
+      if (ledger_.find(id)->fate == BrickFate::kUnsettled)
+        say("%s has not come to rest %.1f s after its placement; going on", id.c_str(),
+            options_.settle_timeout);
+    first = last;
+  }
+  if (!ros::ok()) return Status::error("ROS shut down during the build");
+  if (Status watched =
+          watch(ros::Time::now() + ros::Duration(options_.final_wait), {}, ros::Time());
+      !watched)
+    return watched;
+
+  outcome->summary = ledger_.summary();
+  outcome->met = ledger_.met(scene.expect, &outcome->verdict);
+  outcome->summary_line = formatSummary(scene.name, outcome->summary, ros::Time::now().toSec());
+  return Status::success();
+}
+
+Status BlueprintBuilder::placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first,
+                                    std::size_t last) {
+  const bool together = last - first > 1;
+  std_srvs::SetBool pause;
+  pause.request.data = true;
+  if (together && (!pause_.call(pause) || !pause.response.success))
+    return Status::error("could not pause the simulator to place bricks together");
+  for (std::size_t i = first; i < last; ++i) {
+    const BrickPlacement& brick = bricks[i].placement;
+    PlaceBrick place;
+    place.request.id = brick.id;
+    place.request.type = brick.type;
+    place.request.pose = ros_adapter::toPoseMsg(brick.pose);
+    place.request.twist.linear = ros_adapter::toVectorMsg(brick.linear_velocity);
+    place.request.twist.angular = ros_adapter::toVectorMsg(brick.angular_velocity);
+    if (!place_.call(place)) return Status::error("the call to " + place_.getService() + " failed");
+    if (!place.response.success) {
+      ledger_.recordRefused(brick.id, place.response.message);
+      say("%s refused: %s", brick.id.c_str(), place.response.message.c_str());
+      continue;
+    }
+    const bool thrown = isThrown(bricks[i]);
+    ledger_.recordPlaced(place.response.id, brick.pose, ros::Time::now().toSec(), thrown);
+    if (thrown)
+      say("threw %s at %.2f m/s", place.response.id.c_str(), brick.linear_velocity.norm());
+    else
+      say("placed %s (%zu/%zu)", place.response.id.c_str(), i + 1, bricks.size());
+  }
+  pause.request.data = false;
+  if (together && (!pause_.call(pause) || !pause.response.success))
+    return Status::error("could not resume the simulator after placing bricks together");
+  return Status::success();
+}
+
+Status BlueprintBuilder::observe() {
+  GetBricks get;
+  if (!get_.call(get) || !get.response.success)
+    return Status::error("the call to " + get_.getService() + " failed");
+  std::vector<ObservedBrick> observed;
+  observed.reserve(get.response.bricks.size());
+  for (const Brick& brick : get.response.bricks) observed.push_back(toObserved(brick));
+  const double t = get.response.header.stamp.toSec();
+  for (const LedgerEntry* fell : ledger_.observe(t, observed))
+    say("%s %s: %s", fell->id.c_str(), fell->fell_after_throw ? "was knocked" : "FELL",
+        fell->how.c_str());
+  next_observation_ = ros::Time::now() + ros::Duration(options_.poll_period);
+  return Status::success();
+}
+
+bool BlueprintBuilder::restedAll(const std::vector<std::string>& ids) const {
+  for (const std::string& id : ids)
+    if (ledger_.find(id)->fate == BrickFate::kUnsettled) return false;
+  return true;
+}
+
+Status BlueprintBuilder::watch(const ros::Time& until, const std::vector<std::string>& group,
+                               const ros::Time& settle_until) {
+  // At least one look per call: with a simulator faster than real time the
+  // time to place the next brick may have come already.
+  if (Status looked = observe(); !looked) return looked;
+  while (ros::ok()) {
+    const ros::Time now = ros::Time::now();
+    const bool waiting_for_group = !restedAll(group) && now < settle_until;
+    if (now >= until && !waiting_for_group) return Status::success();
+    const ros::Time wake =
+        std::min(next_observation_, waiting_for_group ? std::max(until, settle_until) : until);
+    ros::Time::sleepUntil(wake);
+    if (ros::Time::now() >= next_observation_) {
+      if (Status looked = observe(); !looked) return looked;
+    }
+  }
+  return Status::error("ROS shut down during the build");
+}
+
+}  // namespace planner
+}  // namespace brick_stack_sim
