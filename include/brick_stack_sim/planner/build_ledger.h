@@ -36,8 +36,10 @@ struct LedgerOptions {
   /// A settled brick has fallen once its centre is this far from where it
   /// settled [m] (most of a KAPLA's thickness: no rest jitter comes near it)
   double fall_distance = 0.005;
-  /// ... or it has turned this much from how it settled [rad].
-  double fall_angle = 0.2;
+  /// ... or it has turned this much from how it settled [rad]: 3 degrees, a
+  /// tilt anyone sees, which a plank that tips off an edge onto the table
+  /// (6 degrees for a KAPLA) exceeds while its centre barely moves.
+  double fall_angle = 0.05;
 };
 
 /// How a placed brick stands at the last observation.

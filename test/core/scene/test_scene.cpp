@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -188,12 +190,97 @@ TEST(Scene, CardHouseHasItsRowsAndRefusesWhatCannotStand) {
 }
 
 TEST(Scene, PackageScenesAllLoad) {
-  for (const char* name : {"tower10", "tower25_built", "single_drop", "card_house", "aframe"}) {
+  int scenes = 0;
+  for (const auto& file : std::filesystem::directory_iterator(test::dataPath("scenes"))) {
+    if (file.path().extension() != ".yaml") continue;
+    ++scenes;
     Scene scene;
-    const Status s = loadScene(name, {test::dataPath("scenes")}, test::packageTypes(), &scene);
+    const Status s = loadScene(file.path().string(), {}, test::packageTypes(), &scene);
     EXPECT_TRUE(s.ok) << s.message;
-    EXPECT_FALSE(scene.bricks.empty()) << name;
+    EXPECT_FALSE(scene.bricks.empty()) << file.path();
+    EXPECT_EQ(scene.name, file.path().stem().string()) << "a scene is named after its file";
   }
+  // The six demos of issue 10 and the benchmark's scenes.
+  EXPECT_GE(scenes, 20);
+}
+
+TEST(Scene, ExpectedOutcomeIsReadAndCheckedAndStandsByDefault) {
+  Scene scene;
+  ASSERT_TRUE(parseScene("bricks: []", "s", test::packageTypes(), &scene).ok);
+  EXPECT_EQ(scene.expect, ExpectedOutcome::kStands);
+  ASSERT_TRUE(parseScene("expect: collapses\nbricks: []", "s", test::packageTypes(), &scene).ok);
+  EXPECT_EQ(scene.expect, ExpectedOutcome::kCollapses);
+  const Status typo = parseScene("expect: falls", "s", test::packageTypes(), &scene);
+  EXPECT_FALSE(typo.ok);
+  EXPECT_NE(typo.message.find("'stands' or 'collapses'"), std::string::npos) << typo.message;
+}
+
+TEST(Scene, ImpactThrowsABrickSquareAtTheOuterFaceOfTheStruckLayer) {
+  for (int layer : {3, 4, 13}) {
+    ImpactParams params;
+    params.tower.layers = 13;
+    params.tower.interval = 0.25;
+    params.layer = layer;
+    params.speed = 2.0;
+    std::vector<ScheduledBrick> bricks;
+    ASSERT_TRUE(generateImpact(params, test::packageTypes(), &bricks).ok);
+    ASSERT_EQ(bricks.size(), 27u);
+    const ScheduledBrick& striker = bricks.back();
+    EXPECT_EQ(striker.placement.id, kStrikerId);
+    // Thrown 1 s after the last tower brick (26 bricks, 0.25 s apart).
+    EXPECT_DOUBLE_EQ(striker.at, 25 * 0.25 + 1.0);
+    // The first brick of the layer: even layers (from 0) at y = -offset
+    // along x, struck from -y; odd ones at x = -offset along y, from -x.
+    const test::TowerSlot slot = test::towerSlot(layer - 1, 0);
+    const bool along_x = (layer - 1) % 2 == 0;
+    const Eigen::Vector3d inward = along_x ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
+    EXPECT_TRUE(striker.placement.linear_velocity.isApprox(2.0 * inward)) << layer;
+    const Eigen::Vector3d centre = striker.placement.pose.translation();
+    EXPECT_NEAR(centre.z(), slot.z + kImpactAimAbove, 1e-12) << "aimed at the layer";
+    const double face = (along_x ? slot.y : slot.x) - kKaplaWidth / 2;
+    const double striker_front = (along_x ? centre.y() : centre.x()) + kKaplaWidth / 2;
+    // 4 mm away at most, and no further than 2 ms of flight at 2 m/s.
+    EXPECT_NEAR(face - striker_front, 2.0 * kMaxImpactFlight, 1e-12) << layer;
+    // Parallel to the brick it strikes, over its middle.
+    EXPECT_NEAR(along_x ? centre.x() : centre.y(), 0.0, 1e-12);
+    const Eigen::Vector3d long_axis = striker.placement.pose.linear() * Eigen::Vector3d::UnitX();
+    EXPECT_NEAR(
+        std::abs(long_axis.dot(along_x ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY())), 1.0,
+        1e-12);
+  }
+}
+
+TEST(Scene, ImpactRefusesALayerOutsideTheTowerAndAnUnphysicalSpeed) {
+  ImpactParams params;
+  params.tower.layers = 5;
+  std::vector<ScheduledBrick> bricks;
+  for (int layer : {0, 6}) {
+    params.layer = layer;
+    const Status s = generateImpact(params, test::packageTypes(), &bricks);
+    EXPECT_FALSE(s.ok) << layer;
+    EXPECT_NE(s.message.find("[1, 5]"), std::string::npos) << s.message;
+  }
+  params.layer = 5;
+  for (double speed : {0.0, -1.0, std::nan(""), 1e9}) {
+    params.speed = speed;
+    EXPECT_FALSE(generateImpact(params, test::packageTypes(), &bricks).ok) << speed;
+  }
+  EXPECT_TRUE(bricks.empty()) << "a refused generator appends nothing";
+}
+
+TEST(Scene, KaplaRecordIsFloorsOfTwoCrossedLayers) {
+  Scene scene;
+  ASSERT_TRUE(
+      loadScene("kapla_record", {test::dataPath("scenes")}, test::packageTypes(), &scene).ok);
+  ASSERT_EQ(scene.bricks.size(), 133u * 4u);
+  double top = 0.0;
+  for (const ScheduledBrick& brick : scene.bricks)
+    top = std::max(top, brick.placement.pose.translation().z() + kKaplaThickness / 2);
+  EXPECT_NEAR(top, 266 * kKaplaThickness, 1e-9);
+  KaplaRecordParams params;
+  params.floors = 0;
+  std::vector<ScheduledBrick> bricks;
+  EXPECT_FALSE(generateKaplaRecord(params, test::packageTypes(), &bricks).ok);
 }
 
 }  // namespace
