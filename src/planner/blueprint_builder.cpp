@@ -81,8 +81,10 @@ Status BlueprintBuilder::loadScene(Scene* scene) const {
   return brick_stack_sim::loadScene(options_.scene, options_.scene_dirs, types, scene);
 }
 
+double BlueprintBuilder::clock(const ros::Time& t) const { return (t - epoch_).toSec(); }
+
 void BlueprintBuilder::say(const char* format, ...) const {
-  std::fprintf(progress_, "[t=%6.2f s] ", ros::Time::now().toSec());
+  std::fprintf(progress_, "[t=%6.2f s] ", clock(ros::Time::now()));
   va_list arguments;
   va_start(arguments, format);
   std::vfprintf(progress_, format, arguments);
@@ -109,6 +111,8 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
                          " s: is the simulator's publish_clock on?");
 
   const ros::Time start = ros::Time::now();
+  // Sim time reads as the simulator's own; wall time from the build's start.
+  epoch_ = ros::Time::isSimTime() ? ros::Time() : start;
   const std::vector<ScheduledBrick>& bricks = scene.bricks;
   say("building scene %s: %zu bricks over %.1f s", scene.name.c_str(), bricks.size(),
       bricks.empty() ? 0.0 : bricks.back().at);
@@ -171,7 +175,7 @@ Status BlueprintBuilder::placeGroup(const std::vector<ScheduledBrick>& bricks, s
       continue;
     }
     const bool thrown = isThrown(bricks[i]);
-    ledger_.recordPlaced(place.response.id, brick.pose, ros::Time::now().toSec(), thrown);
+    ledger_.recordPlaced(place.response.id, brick.pose, clock(ros::Time::now()), thrown);
     if (thrown)
       say("threw %s at %.2f m/s", place.response.id.c_str(), brick.linear_velocity.norm());
     else
@@ -190,7 +194,7 @@ Status BlueprintBuilder::observe() {
   std::vector<ObservedBrick> observed;
   observed.reserve(get.response.bricks.size());
   for (const Brick& brick : get.response.bricks) observed.push_back(toObserved(brick));
-  const double t = get.response.header.stamp.toSec();
+  const double t = clock(get.response.header.stamp);
   for (const LedgerEntry* fell : ledger_.observe(t, observed))
     say("%s %s: %s", fell->id.c_str(), fell->fell_after_throw ? "was knocked" : "FELL",
         fell->how.c_str());

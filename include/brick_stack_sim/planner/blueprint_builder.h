@@ -74,6 +74,8 @@ class BlueprintBuilder {
   Status watch(const ros::Time& until, const std::vector<std::string>& group,
                const ros::Time& settle_until);
   bool restedAll(const std::vector<std::string>& ids) const;
+  /// Seconds of `t` since epoch_: what progress lines and the summary show.
+  double clock(const ros::Time& t) const;
   void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
 
   ros::NodeHandle nh_;
@@ -82,6 +84,7 @@ class BlueprintBuilder {
   BuildLedger ledger_;
   ros::ServiceClient place_, get_, pause_;
   ros::Time next_observation_;
+  ros::Time epoch_;  ///< 0 on sim time; the build's start on wall time.
 };
 
 }  // namespace planner
