@@ -13,11 +13,11 @@ test: deps
 	@scripts/run_tests.sh
 
 demo: deps
-	@scripts/run_demo.sh
+	@scripts/run_demo.sh $(ARGS)
 
 demo-gui:
 	@scripts/install_deps.sh gui
-	@scripts/run_demo.sh gui:=true
+	@scripts/run_demo.sh gui:=true $(ARGS)
 
 bench-quick:
 	@scripts/install_deps.sh bench

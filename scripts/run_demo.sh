@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the package and runs launch/demo.launch: a tower is built brick by
-# brick through ~place_brick and a summary is printed; the launch ends by itself.
-# Arguments are passed to roslaunch (e.g. gui:=true layers:=12 mode:=none).
+# Builds the package and runs launch/demo.launch: a demo scene (default: the
+# 25-layer 4-stack) is built brick by brick through ~place_brick by
+# blueprint_builder, which prints a summary; the launch ends by itself.
+# Arguments are passed to roslaunch (e.g. gui:=true scene:=card_house mode:=none).
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
 "${repo_root}/scripts/build.sh"
