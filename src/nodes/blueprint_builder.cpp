@@ -52,9 +52,11 @@ int main(int argc, char** argv) {
   private_nh.param("end_launch", end_launch, false);
   if (end_launch && startedByRoslaunch()) {
     kill(getppid(), SIGINT);
-    // roslaunch now stops its nodes, this one too: wait for it so that its
-    // log shows a node killed on exit, not one that died on its own.
-    ros::waitForShutdown();
+    // roslaunch now stops its nodes, this one too: wait for it (a while, in
+    // case it never comes) so that its log shows a node killed on exit, not
+    // one that died on its own.
+    const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
+    while (ros::ok() && ros::WallTime::now() < give_up) ros::WallDuration(0.05).sleep();
   }
   return outcome.met ? 0 : 1;
 }
