@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
   options.duration = cli.duration;
   const DataOptions& data = cli.config.data;
   Status status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
-  if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene);
+  if (status)
+    status = loadScene(data.scene, data.scene_dirs, types, &scene, data.scene_max_bytes);
   if (status) status = runScene(scene, types, options, &report);
   if (!status) {
     std::cerr << "stack_sim_run: " << status.message << "\n";

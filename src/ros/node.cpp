@@ -328,7 +328,8 @@ Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
   Scene scene;
   if (!scene_name.empty()) {
     if (Status loaded =
-            loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), &scene);
+            loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), &scene,
+                      options_.config.data.scene_max_bytes);
         !loaded)
       return loaded;
   }

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/stability/stability_modes.h"
 
 namespace brick_stack_sim {
@@ -110,7 +111,9 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
     } else if (flag == "--duration") {
       double duration = 0.0;
       parsed = parseDouble(flag, value, &duration);
-      if (parsed && duration < 0.0) parsed = Status::error("--duration must be >= 0 s");
+      if (parsed && (duration < 0.0 || duration > kMaxSceneTime))
+        parsed = Status::error("--duration must be in [0, " +
+                               std::to_string(static_cast<long>(kMaxSceneTime)) + "] s");
       result.duration = duration;
     } else if (flag == "--time-step") {
       parsed = parseDouble(flag, value, &world.time_step);

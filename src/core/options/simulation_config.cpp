@@ -19,15 +19,26 @@ Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
   });
 }
 
-/// Paths only: whether they can be read is found where they are used.
-void readDataOptions(OptionsReader& reader, DataOptions* data) {
-  reader.read("types_urdf", &data->types_urdf);
-  reader.read("materials_yaml", &data->materials_yaml);
-  reader.read("scene_dirs", &data->scene_dirs);
-  reader.read("scene", &data->scene);
+/// Paths: whether they can be read is found where they are used.
+Status readDataOptions(OptionsReader& reader, DataOptions* options) {
+  return readAndValidate(reader, false, options, [&reader](DataOptions& data) {
+    reader.read("types_urdf", &data.types_urdf);
+    reader.read("materials_yaml", &data.materials_yaml);
+    reader.read("scene_dirs", &data.scene_dirs);
+    reader.read("scene", &data.scene);
+    reader.read("scene_max_bytes", &data.scene_max_bytes);
+  });
 }
 
 }  // namespace
+
+Status validate(const DataOptions& d) {
+  // Below a kilobyte no scene with a generator fits; above a gigabyte the
+  // node would hold the text, the YAML tree and the bricks at once.
+  if (d.scene_max_bytes < 1024 || d.scene_max_bytes > (1 << 30))
+    return bad("scene_max_bytes", d.scene_max_bytes, "must be in [1024, 2^30] bytes");
+  return Status::success();
+}
 
 Status validate(const PublishOptions& p) {
   // Above 10 kHz of sim time a subscriber learns nothing more and the node
@@ -53,7 +64,7 @@ Status readSimulationConfig(OptionsReader& reader, SimulationConfig* config) {
   SimulationConfig result = *config;
   if (Status world = readWorldOptions(reader, &result.world); !world) return world;
   if (Status publish = readPublishOptions(reader, &result.publish); !publish) return publish;
-  readDataOptions(reader, &result.data);
+  if (Status data = readDataOptions(reader, &result.data); !data) return data;
   // Wrong types of the data keys, and any key nobody read.
   if (Status known = reader.finish(); !known) return known;
   *config = std::move(result);

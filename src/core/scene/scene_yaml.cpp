@@ -1,5 +1,12 @@
 #include "brick_stack_sim/core/scene/scene.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -67,7 +74,9 @@ ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
   brick.placement.id = readString(node, "id", where);
   brick.placement.type = readString(node, "type", where);
   brick.at = readNumber(node, "at", where, 0.0);
-  if (brick.at < 0.0) fail(where + ".at", "must be >= 0 s");
+  if (brick.at < 0.0 || brick.at > kMaxSceneTime)
+    fail(where + ".at",
+         "must be in [0, " + std::to_string(static_cast<long>(kMaxSceneTime)) + "] s");
   brick.placement.pose.translation() =
       readVector<3>(node, "position", where, Eigen::Vector3d::Zero());
   if (node["orientation"]) {
@@ -119,9 +128,52 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, const Brick
   fail(where, "unknown generator '" + name + "' (available: " + available + ")");
 }
 
-bool isFile(const std::string& path) {
-  std::ifstream file(path);
-  return file.good();
+/// Whether anything (a file, a FIFO, a directory...) is at `path`: what is
+/// there is judged by readSceneFile, which says what is wrong with it.
+bool exists(const std::string& path) {
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+/// The text of the scene file at `path`: a regular file (after links) of at
+/// most `max_bytes`, read once. Opened without blocking, so that a FIFO with
+/// no writer cannot hang the caller between the check and the read.
+Status readSceneFile(const std::string& path, int max_bytes, std::string* text) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0)
+    return Status::error("scene file " + path + " cannot be opened: " + std::strerror(errno));
+  struct stat info;
+  Status status;
+  if (::fstat(fd, &info) != 0) {
+    status = Status::error("scene file " + path + " cannot be examined: " + std::strerror(errno));
+  } else if (S_ISDIR(info.st_mode)) {
+    status = Status::error("scene " + path + " is a directory, not a scene file");
+  } else if (!S_ISREG(info.st_mode)) {
+    status = Status::error("scene " + path +
+                           " is not a regular file (a FIFO, socket or device): refused unread");
+  } else if (info.st_size > max_bytes) {
+    status = Status::error("scene file " + path + " has " + std::to_string(info.st_size) +
+                           " bytes, more than the limit of " + std::to_string(max_bytes) +
+                           " (parameter scene_max_bytes)");
+  } else {
+    std::string read(static_cast<std::size_t>(info.st_size), '\0');
+    std::size_t filled = 0;
+    // A file that grows while it is read is cut at the size it had.
+    while (filled < read.size()) {
+      const ssize_t got = ::read(fd, &read[filled], read.size() - filled);
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) {
+        status = Status::error("scene file " + path + " cannot be read: " + std::strerror(errno));
+        break;
+      }
+      if (got == 0) break;
+      filled += static_cast<std::size_t>(got);
+    }
+    read.resize(filled);
+    *text = std::move(read);
+  }
+  ::close(fd);
+  return status;
 }
 
 std::string stem(const std::string& path) {
@@ -180,6 +232,11 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     for (const ScheduledBrick& brick : result.bricks) {
       const std::string& id = brick.placement.id;
       if (!id.empty() && !ids.insert(id).second) fail("bricks", "id '" + id + "' appears twice");
+      // A generator's long schedule ends here too.
+      if (!(brick.at <= kMaxSceneTime))
+        fail("bricks", "brick '" + id + "' is placed at " + std::to_string(brick.at) +
+                           " s, after the latest allowed " +
+                           std::to_string(static_cast<long>(kMaxSceneTime)) + " s");
       const std::string& type = brick.placement.type;
       if (!type.empty() && !all_types.find(type))
         fail("bricks", "brick '" + id + "' has unknown type '" + type + "'");
@@ -196,15 +253,15 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
 }
 
 Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
-                 const BrickTypeLibrary& types, Scene* scene) {
+                 const BrickTypeLibrary& types, Scene* scene, int max_bytes) {
   if (name_or_path.empty()) return Status::error("no scene given");
   std::string path;
-  if (isFile(name_or_path)) {
+  if (exists(name_or_path)) {
     path = name_or_path;
   } else {
     for (const std::string& dir : scene_dirs) {
       const std::string candidate = dir + "/" + name_or_path + ".yaml";
-      if (isFile(candidate)) {
+      if (exists(candidate)) {
         path = candidate;
         break;
       }
@@ -216,10 +273,9 @@ Status loadScene(const std::string& name_or_path, const std::vector<std::string>
     return Status::error("unknown scene '" + name_or_path + "': no such file, and no " +
                          name_or_path + ".yaml in [" + searched + "]");
   }
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseScene(text.str(), stem(path), types, scene);
+  std::string text;
+  if (Status read = readSceneFile(path, max_bytes, &text); !read) return read;
+  return parseScene(text, stem(path), types, scene);
 }
 
 }  // namespace brick_stack_sim

@@ -49,6 +49,18 @@ inline std::string millijoules(double joules) {
   return text.str();
 }
 
+/// Longest id a message repeats in full [characters]; longer ones are cut.
+constexpr std::size_t kQuotedIdLength = 40;
+
+/// An id as messages show it, in quotes: in full up to kQuotedIdLength
+/// characters, else its start and its length ('abc...' (10240 characters)),
+/// so that a refusal never echoes a huge request back, nor logs it.
+inline std::string quotedId(const std::string& id) {
+  if (id.size() <= kQuotedIdLength) return "'" + id + "'";
+  return "'" + id.substr(0, kQuotedIdLength) + "...' (" + std::to_string(id.size()) +
+         " characters)";
+}
+
 /// "a, b, c".
 inline std::string joinNames(const std::vector<std::string>& names) {
   std::string text;

@@ -237,7 +237,7 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
 Status BrickWorld::removeBrick(const std::string& id) {
   WorldState& w = *state_;
   BrickRecord* brick = w.bricks.find(id);
-  if (!brick) return Status::error("no brick with id '" + id + "'");
+  if (!brick) return Status::error("no brick with id " + quotedId(id));
   StabilityInput input;
   input.removed.push_back(brick->handle);
   std::vector<std::string> woken;
@@ -272,16 +272,16 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
                                 const Eigen::Vector3d& point) {
   WorldState& w = *state_;
   BrickRecord* brick = w.bricks.find(id);
-  if (!brick) return Status::error("no brick with id '" + id + "'");
+  if (!brick) return Status::error("no brick with id " + quotedId(id));
   if (!impulse.allFinite()) return Status::error("impulse is not finite");
   if (!point.allFinite()) return Status::error("point of application is not finite");
   if (brick->mode == BrickMode::kHeld)
-    return Status::error("brick '" + id + "' is held: move it through the held target");
+    return Status::error("brick " + quotedId(id) + " is held: move it through the held target");
   const BodyHandle h = brick->handle;
   const double outside = (point - nearestPointIn(w.boxOf(h), point)).norm();
   if (outside > kPushPointTolerance)
     return Status::error("point of application " + formatVector(point) + " is " +
-                         millimetres(outside) + " outside brick '" + id + "' (at most " +
+                         millimetres(outside) + " outside brick " + quotedId(id) + " (at most " +
                          millimetres(kPushPointTolerance) + ")");
   // The speeds the push leaves the brick with, before Bullet sees it: a push
   // that would launch it past the placement limits is refused, not repaired.
@@ -314,7 +314,7 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
 Status BrickWorld::graspBrick(const std::string& id) {
   WorldState& w = *state_;
   BrickRecord* brick = w.bricks.find(id);
-  if (!brick) return Status::error("no brick with id '" + id + "'");
+  if (!brick) return Status::error("no brick with id " + quotedId(id));
   if (!w.sets.held().empty())
     return Status::error("brick '" + w.sets.held().front()->id +
                          "' is already held: release it first (one brick at a time)");
@@ -322,7 +322,7 @@ Status BrickWorld::graspBrick(const std::string& id) {
     std::vector<std::string> carried;
     for (BodyHandle upper : w.model->carriedBy(brick->handle)) carried.push_back(w.nameOf(upper));
     if (!carried.empty())
-      return Status::error("brick '" + id + "' carries " + joinNames(carried) +
+      return Status::error("brick " + quotedId(id) + " carries " + joinNames(carried) +
                            ": grasp or remove what rests on it first");
   }
   StabilityInput input;
@@ -358,8 +358,9 @@ Status BrickWorld::releaseBrick(const std::string& id, const Eigen::Vector3d& li
                                 const Eigen::Vector3d& angular_velocity) {
   WorldState& w = *state_;
   BrickRecord* brick = w.bricks.find(id);
-  if (!brick) return Status::error("no brick with id '" + id + "'");
-  if (brick->mode != BrickMode::kHeld) return Status::error("brick '" + id + "' is not held");
+  if (!brick) return Status::error("no brick with id " + quotedId(id));
+  if (brick->mode != BrickMode::kHeld)
+    return Status::error("brick " + quotedId(id) + " is not held");
   if (Status velocity = checkVelocity(w, linear_velocity, angular_velocity, "release "); !velocity)
     return velocity;
   w.sets.transfer(brick, BrickMode::kDynamic);

@@ -27,6 +27,13 @@ bool validId(const std::string& id) {
 
 }  // namespace
 
+bool isReservedId(const std::string& id) {
+  std::string lower(id);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower == "table" || lower == "floor" || lower == "world";
+}
+
 Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose,
                  const Eigen::Vector3d& half_extents, const std::string& prefix) {
   if (!pose.translation().allFinite())
@@ -58,11 +65,14 @@ Status checkVelocity(const WorldState& w, const Eigen::Vector3d& linear,
 Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   if (!p.id.empty()) {
     if (!validId(p.id))
-      return Status::error("id '" + p.id +
-                           "' is not valid: use a letter then letters, digits, '_' or '-' "
+      return Status::error("id " + quotedId(p.id) +
+                           " is not valid: use a letter then letters, digits, '_' or '-' "
                            "(at most 128 characters)");
-    if (p.id == "table" || p.id == "world") return Status::error("id '" + p.id + "' is reserved");
-    if (w.bricks.find(p.id)) return Status::error("id '" + p.id + "' is already in use");
+    if (isReservedId(p.id))
+      return Status::error("id " + quotedId(p.id) +
+                           " is reserved: table, floor and world (in any case) name the "
+                           "scene's fixed bodies in supported_by and on tf");
+    if (w.bricks.find(p.id)) return Status::error("id " + quotedId(p.id) + " is already in use");
   }
   const std::string type_name = p.type.empty() ? w.types.defaultType() : p.type;
   const BrickType* type = w.types.find(type_name);

@@ -22,6 +22,10 @@ Status checkPose(const WorldState& world, const Eigen::Isometry3d& pose,
 Status checkVelocity(const WorldState& world, const Eigen::Vector3d& linear,
                      const Eigen::Vector3d& angular, const std::string& prefix = "");
 
+/// Whether `id` names one of the scene's fixed bodies (table, floor, world,
+/// in any case), which supported_by and tf use: never a brick's id.
+bool isReservedId(const std::string& id);
+
 /// Would the world accept this placement? The id (valid, not reserved, not
 /// in use), the type, finite numbers, a proper rotation, speeds within the
 /// limits, not below the table top and not inside another brick. The

@@ -1,6 +1,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+
+#include <sys/stat.h>
 
 #include <gtest/gtest.h>
 
@@ -202,6 +205,59 @@ TEST(Scene, PackageScenesAllLoad) {
   }
   // The six demos of issue 10 and the benchmark's scenes.
   EXPECT_GE(scenes, 20);
+}
+
+/// A scene file that is not one: refused at once, with what it is.
+TEST(Scene, OnlyRegularFilesWithinTheSizeLimitAreRead) {
+  const BrickTypeLibrary types = test::packageTypes();
+  Scene scene;
+  const std::string dir = ::testing::TempDir() + "/scene_files";
+  std::filesystem::create_directories(dir);
+  const std::string fifo = dir + "/fifo.yaml";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string sparse = dir + "/sparse.yaml";
+  { std::ofstream file(sparse); }
+  std::filesystem::resize_file(sparse, 1ull << 30);  // 1 GiB of holes, written in no time
+  const std::pair<std::string, std::string> cases[] = {
+      {"/dev/zero", "not a regular file"},
+      {fifo, "not a regular file"},
+      {dir, "is a directory"},
+      {sparse, "1073741824 bytes, more than the limit of 67108864"},
+  };
+  for (const auto& [path, expected] : cases) {
+    const Status s = loadScene(path, {}, types, &scene);
+    EXPECT_FALSE(s.ok) << path;
+    EXPECT_NE(s.message.find(expected), std::string::npos) << s.message;
+  }
+  // By name too: a FIFO in a scene directory does not block the lookup.
+  EXPECT_NE(loadScene("fifo", {dir}, types, &scene).message.find("not a regular file"),
+            std::string::npos);
+  // The limit is the caller's.
+  const std::string small = dir + "/small.yaml";
+  {
+    std::ofstream file(small);
+    file << "bricks:\n  - {position: [0, 0, 0.0039]}\n" << std::string(2000, '#') << "\n";
+  }
+  EXPECT_FALSE(loadScene(small, {}, types, &scene, 1024).ok);
+  EXPECT_TRUE(loadScene(small, {}, types, &scene, 4096).ok);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Scene, PlacementTimesHaveALimit) {
+  const BrickTypeLibrary types = test::packageTypes();
+  Scene scene;
+  const Status late =
+      parseScene("bricks:\n  - {at: 1e7, position: [0, 0, 0.0039]}", "s", types, &scene);
+  EXPECT_FALSE(late.ok);
+  EXPECT_NE(late.message.find("bricks[0].at"), std::string::npos) << late.message;
+  const Status generated =
+      parseScene("generator: {name: tower, layers: 3, interval: 400000}", "s", types, &scene);
+  EXPECT_FALSE(generated.ok);
+  EXPECT_NE(generated.message.find("after the latest allowed 1000000 s"), std::string::npos)
+      << generated.message;
+  EXPECT_TRUE(
+      parseScene("bricks:\n  - {at: 1e6, position: [0, 0, 0.0039]}", "s", types, &scene).ok);
 }
 
 TEST(Scene, ExpectedOutcomeIsReadAndCheckedAndStandsByDefault) {

@@ -164,6 +164,7 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
       {{"--scene", "x", "--duration", "-3"}, "--duration"},
       {{"--mode", "none"}, "--scene is required"},
       {{"tower10"}, "unexpected argument"},
+      {{"--scene", "tower10", "--duration", "1e300"}, "--duration must be in [0, 1000000] s"},
   };
   for (const Case& c : cases) {
     RunCommandLine cli;
@@ -183,6 +184,15 @@ int runExecutable(const std::string& args, std::string* output) {
   while (std::fgets(buffer, sizeof buffer, pipe)) *output += buffer;
   const int status = pclose(pipe);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(StackSimRun, RefusesAFileThatIsNotASceneAtOnce) {
+  // /dev/zero once made the runner read until it was killed for memory.
+  std::string output;
+  EXPECT_EQ(runExecutable("--scene /dev/zero --duration 1", &output), 1) << output;
+  EXPECT_NE(output.find("not a regular file"), std::string::npos) << output;
+  EXPECT_EQ(runExecutable("--scene /tmp --duration 1", &output), 1) << output;
+  EXPECT_NE(output.find("is a directory"), std::string::npos) << output;
 }
 
 TEST(StackSimRun, WritesTheReportAndFailsClearlyOnBadInput) {

@@ -85,11 +85,26 @@ TEST_P(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
   expectRefused(world_->addBrick(placement("new", {0, 0.1, 0.0039}, 0.0, "granite")),
                 "unknown brick type 'granite'");
   expectRefused(world_->addBrick(placement("base", {0, 0.1, 0.0039})), "already in use");
-  expectRefused(world_->addBrick(placement("table", {0, 0.1, 0.0039})), "reserved");
+  // The fixed bodies' names, in any case (issue 11: `supported_by: [floor]`
+  // must not be ambiguous).
+  for (const char* reserved : {"table", "floor", "world", "Table", "FLOOR", "WoRlD"})
+    expectRefused(world_->addBrick(placement(reserved, {0, 0.1, 0.0039})), "is reserved");
+  EXPECT_TRUE(world_->checkPlacement(placement("floor_1", {0, 0.1, 0.0039})).ok);
   expectRefused(world_->addBrick(placement("has space", {0, 0.1, 0.0039})), "not valid");
   expectRefused(world_->addBrick(placement("/slash", {0, 0.1, 0.0039})), "not valid");
   expectRefused(world_->removeBrick("ghost"), "no brick with id 'ghost'");
   expectRefused(world_->removeBrick(""), "no brick with id");
+}
+
+TEST_P(InvalidInput, AHugeIdIsCutShortInTheMessage) {
+  const std::string huge = "b" + std::string(10239, 'x');
+  for (const Status& refused : {world_->addBrick(placement(huge, {0, 0.1, 0.0039})),
+                                world_->removeBrick(huge), world_->graspBrick(huge)}) {
+    EXPECT_FALSE(refused.ok);
+    EXPECT_LT(refused.message.size(), 300u) << refused.message.substr(0, 300);
+    EXPECT_NE(refused.message.find("(10240 characters)"), std::string::npos)
+        << refused.message.substr(0, 300);
+  }
 }
 
 TEST_P(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "brick_stack_sim/core/options/parameter_value.h"
+#include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/world_options.h"
 
@@ -17,7 +18,12 @@ struct DataOptions {
   std::string materials_yaml;  ///< Friction and restitution per type; empty: the package's.
   std::vector<std::string> scene_dirs;  ///< Where scene names are looked up; empty: the package's.
   std::string scene;  ///< Played at start (a name or a path); empty: an empty table.
+  /// Largest scene file read [bytes]; a bigger one is refused unread.
+  int scene_max_bytes = kDefaultSceneMaxBytes;
 };
+
+/// Checks every field; the message names the first bad one by its key.
+Status validate(const DataOptions& options);
 
 /// How the ROS node publishes and paces the world. The batch runner reads
 /// them too, and uses none, so that one yaml file serves both programs.
@@ -35,7 +41,7 @@ struct PublishOptions {
 /// options tree of the node (its private parameters) and of the runner
 /// (stack_sim_run --config). Keys: the world's (WorldOptions) and
 /// publish_rate, publish_clock, real_time_factor, frame_id, frame_prefix, types_urdf,
-/// materials_yaml, scene_dirs and scene, all at the top.
+/// materials_yaml, scene_dirs, scene and scene_max_bytes, all at the top.
 struct SimulationConfig {
   WorldOptions world;
   DataOptions data;

@@ -40,9 +40,21 @@ struct Scene {
 /// (together with the scene's own types); `name` is used when the yaml has none.
 Status parseScene(const std::string& yaml_text, const std::string& name,
                   const BrickTypeLibrary& types, Scene* scene);
+/// Latest placement time a scene may give [s]: 11.6 days of sim time, more
+/// than any run reaches; a larger `at` is a typo that would make a runner
+/// simulate until killed.
+constexpr double kMaxSceneTime = 1e6;
+
+/// Default of the largest scene file loadScene() reads [bytes]: 64 MiB.
+constexpr int kDefaultSceneMaxBytes = 64 << 20;
+
 /// Loads a scene from a file, or by name from `scene_dirs` (`<dir>/<name>.yaml`).
+/// Only a regular file (after links) of at most `max_bytes` is read, once
+/// and without blocking: a FIFO, a device such as /dev/zero, a directory or
+/// a bigger file is refused at once with a message that says which.
 Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
-                 const BrickTypeLibrary& types, Scene* scene);
+                 const BrickTypeLibrary& types, Scene* scene,
+                 int max_bytes = kDefaultSceneMaxBytes);
 
 /// Adds the scene's own types to `types` (the scene's win on a name clash).
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
