@@ -2,6 +2,8 @@
 // publishing /clock and ~bricks, so a client that joins while it is paused
 // sees the clock standing still and every brick; tf names the bricks and
 // the table under the frame prefix (sim1/ in conventions.test).
+#include <cmath>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -10,10 +12,13 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include "brick_stack_sim/BrickArray.h"
+#include "brick_stack_sim/StabilityEvent.h"
 #include "ros/node_fixture.h"
 
 namespace brick_stack_sim {
@@ -56,6 +61,64 @@ TEST_F(ConventionsNode, ClockAndBricksKeepArrivingWhilePaused) {
   EXPECT_EQ(last_bricks->bricks.front().id, "resting");
   // Stamped in sim time, as /clock says (publish_clock is on).
   EXPECT_EQ(last_bricks->header.stamp.toSec(), clocks.front());
+}
+
+TEST_F(ConventionsNode, PublishClockSetsUseSimTimeAndEveryStampIsSimTime) {
+  bool use_sim_time = false;
+  ASSERT_TRUE(ros::param::get("/use_sim_time", use_sim_time)) << "sim.launch did not set it";
+  EXPECT_TRUE(use_sim_time);
+  EXPECT_TRUE(ros::Time::isSimTime());
+  ASSERT_TRUE(setPaused(false));
+  std::mutex mutex;
+  double clock = -1.0;
+  // Per topic: the largest distance between a stamp and /clock at receipt [s].
+  std::map<std::string, double> worst;
+  std::map<std::string, int> received;
+  auto note = [&](const std::string& topic, const ros::Time& stamp) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (clock < 0.0) return;
+    worst[topic] = std::max(worst[topic], std::abs(stamp.toSec() - clock));
+    ++received[topic];
+  };
+  ros::Subscriber clock_sub = nh_.subscribe<rosgraph_msgs::Clock>(
+      "/clock", 100, [&](const rosgraph_msgs::Clock::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        clock = msg->clock.toSec();
+      });
+  ros::Subscriber bricks_sub = nh_.subscribe<BrickArray>(
+      "/brick_sim/bricks", 100,
+      [&](const BrickArray::ConstPtr& msg) { note("bricks", msg->header.stamp); });
+  ros::Subscriber markers_sub = nh_.subscribe<visualization_msgs::MarkerArray>(
+      "/brick_sim/markers", 100, [&](const visualization_msgs::MarkerArray::ConstPtr& msg) {
+        for (const auto& marker : msg->markers)
+          if (marker.action != visualization_msgs::Marker::DELETEALL)
+            note("markers", marker.header.stamp);
+      });
+  ros::Subscriber events_sub = nh_.subscribe<StabilityEvent>(
+      "/brick_sim/events", 100,
+      [&](const StabilityEvent::ConstPtr& msg) { note("events", msg->header.stamp); });
+  ros::Subscriber tf_sub =
+      nh_.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+        for (const auto& transform : msg->transforms) note("tf", transform.header.stamp);
+      });
+  ros::WallDuration(1.0).sleep();                          // connections up
+  ASSERT_TRUE(place("stamped", 0.0, -0.2, 0.02).success);  // falls: events and tf
+  const bool arrived = waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return received["bricks"] >= 10 && received["markers"] >= 10 && received["events"] >= 1 &&
+               received["tf"] >= 10;
+      },
+      15.0);
+  std::lock_guard<std::mutex> lock(mutex);
+  ASSERT_TRUE(arrived) << received["bricks"] << " bricks, " << received["markers"] << " markers, "
+                       << received["events"] << " events, " << received["tf"] << " tf";
+  // Wall time would be ~1.8e9 s away from a sim clock that started at 0; a
+  // sim stamp is at most a publish period (1/30 s) and a hop behind it.
+  for (const auto& [topic, distance] : worst) EXPECT_LT(distance, 0.1) << topic;
+  GetBricks get;
+  ASSERT_TRUE(get_.call(get));
+  EXPECT_LT(std::abs(get.response.header.stamp.toSec() - clock), 0.1) << "~get_bricks";
 }
 
 TEST_F(ConventionsNode, TfNamesBricksAndTableUnderTheFramePrefix) {
