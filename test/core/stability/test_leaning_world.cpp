@@ -133,7 +133,7 @@ std::vector<BrickPlacement> twoLevelCardHouse() {
   add_v("v1", half_base, 0.0);
   Eigen::Isometry3d floor = Eigen::Isometry3d::Identity();
   floor.translation() = Eigen::Vector3d(0.0, 0.0, top + 0.5 * kKaplaThickness);
-  bricks.push_back(at("floor", floor));
+  bricks.push_back(at("level", floor));
   add_v("v2", 0.0, top + kKaplaThickness);
   return bricks;
 }
@@ -144,7 +144,7 @@ TEST_P(StaticsInMode, TwoLevelCardHouseBuiltVByVStandsStill) {
     const Status placed = world->addBrick(placement);
     ASSERT_TRUE(placed.ok) << placement.id << ": " << placed.message;
     // Bullet steps between the V's: each is judged as it is completed.
-    if (placement.id.back() == 'r' || placement.id == "floor") world->step();
+    if (placement.id.back() == 'r' || placement.id == "level") world->step();
   }
   test::runFor(world.get(), 2.0);
   for (const BrickPlacement& placement : twoLevelCardHouse()) {
