@@ -11,7 +11,7 @@ build_packages=(
   libros-rosgraph-msgs-dev libtf2-ros-dev
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
   libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
-  googletest libgtest-dev
+  googletest libgtest-dev catkin-lint python3-rospkg
   # teleop: the RViz brick placer
   libinteractive-markers-dev
 )

@@ -6,7 +6,7 @@ set -eo pipefail
 source "$(dirname "$0")/env.sh"
 plan="${1:-quick}"
 case "${plan}" in quick|full) ;; *) echo "run_bench.sh: quick or full" >&2; exit 2 ;; esac
-"${repo_root}/scripts/build.sh"
+bash "${repo_root}/scripts/build.sh"
 results="${repo_root}/bench/results"
 mkdir -p "${results}"
 csv="${results}/bench_${plan}.csv"

@@ -5,7 +5,7 @@
 # Arguments are passed to roslaunch (e.g. gui:=true scene:=card_house mode:=none).
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
-"${repo_root}/scripts/build.sh"
+bash "${repo_root}/scripts/build.sh"
 cd "${workspace}"
 # shellcheck disable=SC1091
 source devel/setup.bash

@@ -4,7 +4,7 @@
 # ones must give bit-identical reports when run twice.
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
-"${repo_root}/scripts/build.sh"
+bash "${repo_root}/scripts/build.sh"
 run="${workspace}/devel/lib/brick_stack_sim/stack_sim_run"
 out="${workspace}/stress"
 mkdir -p "${out}"

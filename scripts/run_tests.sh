@@ -3,7 +3,7 @@
 # line "N passed, N failed"; exits non-zero when anything failed.
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
-"${repo_root}/scripts/build.sh" tests
+bash "${repo_root}/scripts/build.sh" tests
 cd "${workspace}"
 results="${workspace}/build/test_results/brick_stack_sim"
 rm -rf "${results}"
@@ -12,6 +12,21 @@ set +e
 source devel/setup.bash
 catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"${workspace}/test.log" 2>&1
 run_status=$?
+# The package stays catkin_lint -W1 clean: one more test in the count.
+mkdir -p "${results}"
+lint_output="$(cd "${repo_root}" && catkin_lint -W1 . 2>&1)" && lint_status=0 || lint_status=$?
+/usr/bin/python3 - "${results}/catkin_lint.xml" "${lint_status}" "${lint_output}" <<'PY'
+import sys
+from xml.sax.saxutils import escape
+path, status, output = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+problems = [line for line in output.splitlines() if ": warning: " in line or ": error: " in line]
+failure = ""
+if status != 0 or problems:
+    failure = '<failure message="catkin_lint -W1 found problems">%s</failure>' % escape(output)
+with open(path, "w") as xml:
+    xml.write('<testsuite name="catkin_lint" tests="1"><testcase classname="catkin_lint" '
+              'name="W1_clean">%s</testcase></testsuite>\n' % failure)
+PY
 set -e
 # The per-test lines of every suite, for the reader of the CI log.
 grep -h -E '^\[ +(OK|FAILED) +\]|^\[ROSTEST\]|^ *\* |FAILURE|ERROR' "${workspace}/test.log" \

@@ -6,8 +6,8 @@
 # Usage: bash scripts/screenshot_placer.sh [output.png]
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
-"${repo_root}/scripts/install_deps.sh" gui
-"${repo_root}/scripts/build.sh" brick_stack_sim_node brick_placer
+bash "${repo_root}/scripts/install_deps.sh" gui
+bash "${repo_root}/scripts/build.sh" brick_stack_sim_node brick_placer
 output="$(realpath -m "${1:-${repo_root}/docs/images/placer.png}")"
 mkdir -p "$(dirname "${output}")"
 
