@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "brick_stack_sim/tools/benchmark.h"
+#include "brick_stack_sim/tools/package_data.h"
 
 using namespace brick_stack_sim;
 
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
   }
   const std::string only = argc == 4 ? "," + std::string(argv[3]) + "," : "";
   BenchContext context;
-  const std::string data = BRICK_STACK_SIM_DATA_DIR;
+  const std::string data = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
   context.scene_dirs = {data + "/scenes"};
   if (Status loaded = BrickTypeLibrary::load(data + "/urdf/bricks.urdf",
                                              data + "/config/bricks.yaml", &context.types);

@@ -16,6 +16,7 @@
 #include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/world/brick_world.h"
+#include "brick_stack_sim/tools/package_data.h"
 
 using namespace brick_stack_sim;
 
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
     std::cerr << "usage: stack_sim_held_bench OUT.csv\n";
     return 2;
   }
-  const std::string data = BRICK_STACK_SIM_DATA_DIR;
+  const std::string data = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
   BrickTypeLibrary types;
   if (Status loaded =
           BrickTypeLibrary::load(data + "/urdf/bricks.urdf", data + "/config/bricks.yaml", &types);

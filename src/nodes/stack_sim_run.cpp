@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/tools/package_data.h"
 #include "brick_stack_sim/tools/run_command_line.h"
 
 using namespace brick_stack_sim;
@@ -11,12 +12,13 @@ using namespace brick_stack_sim;
 int main(int argc, char** argv) {
   RunCommandLine cli;
   const std::vector<std::string> args(argv + 1, argv + argc);
-  if (Status parsed = parseRunCommandLine(args, BRICK_STACK_SIM_DATA_DIR, &cli); !parsed) {
+  const std::string data_dir = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
+  if (Status parsed = parseRunCommandLine(args, data_dir, &cli); !parsed) {
     std::cerr << "stack_sim_run: " << parsed.message << "\n";
     return 2;
   }
   if (cli.help) {
-    std::cout << runUsage();
+    std::cout << runUsage(data_dir);
     return 0;
   }
   BrickTypeLibrary types;
@@ -27,8 +29,7 @@ int main(int argc, char** argv) {
   options.duration = cli.duration;
   const DataOptions& data = cli.config.data;
   Status status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
-  if (status)
-    status = loadScene(data.scene, data.scene_dirs, types, &scene, data.scene_max_bytes);
+  if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, data.scene_max_bytes);
   if (status) status = runScene(scene, types, options, &report);
   if (!status) {
     std::cerr << "stack_sim_run: " << status.message << "\n";

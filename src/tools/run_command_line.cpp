@@ -39,7 +39,7 @@ std::string modeLines() {
 
 }  // namespace
 
-std::string runUsage() {
+std::string runUsage(const std::string& data_dir) {
   return "usage: stack_sim_run [--config YAML]... [--scene FILE|NAME] [options]\n"
          "Runs a scene with no ROS master and writes a JSON report.\n"
          "  --config YAML       the node's parameters (config/sim.yaml, config/stability.yaml);\n"
@@ -57,7 +57,8 @@ std::string runUsage() {
          "  --materials YAML    friction and restitution per type (default: config/bricks.yaml)\n"
          "  --scene-dir DIR     where scene names are looked up (repeatable; default scenes/)\n"
          "  --help              this text\n"
-         "Flags override the config files; bad values are refused with their name.\n";
+         "Flags override the config files; bad values are refused with their name.\n" +
+         (data_dir.empty() ? "" : "The package's urdf/, config/ and scenes/: " + data_dir + "\n");
 }
 
 Status parseRunCommandLine(const std::vector<std::string>& args, const std::string& data_dir,

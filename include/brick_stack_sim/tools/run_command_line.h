@@ -20,8 +20,9 @@ struct RunCommandLine {
   bool help = false;
 };
 
-/// Usage text of stack_sim_run.
-std::string runUsage();
+/// Usage text of stack_sim_run; names `data_dir`, where the defaults come
+/// from, when given (devel or install space: see packageDataDir()).
+std::string runUsage(const std::string& data_dir = "");
 
 /// Parses argv (without argv[0]); `data_dir` is where the package's urdf/,
 /// config/ and scenes/ live. An unknown flag, a missing or malformed value, or a

@@ -145,6 +145,14 @@ TEST(RunCommandLine, HelpListsEveryModeOfTheRegistry) {
   EXPECT_TRUE(describeStabilityMode("magic").empty());
 }
 
+TEST(RunCommandLine, HelpNamesWhereThePackageDataIs) {
+  // From an install space that is share/brick_stack_sim, not the source tree.
+  EXPECT_NE(runUsage("/opt/ws/install/share/brick_stack_sim")
+                .find("urdf/, config/ and scenes/: /opt/ws/install/share/brick_stack_sim\n"),
+            std::string::npos);
+  EXPECT_EQ(runUsage().find("urdf/, config/ and scenes/:"), std::string::npos);
+}
+
 TEST(RunCommandLine, BadFlagsAreNamed) {
   struct Case {
     std::vector<std::string> args;
