@@ -54,8 +54,17 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(
       kMarkersTopic, 2,
       [&self](const ros::SingleSubscriberPublisher&) { self.state_dirty_ = true; });
-  if (options.config.publish.clock)
+  if (options.config.publish.clock) {
     self.clock_publisher_ = nh.advertise<rosgraph_msgs::Clock>(kClockTopic, 10);
+    // Every stamp is then sim time; nodes on wall time would find tf and
+    // ~bricks some 1.8e9 s in the past. /use_sim_time must be set before the
+    // nodes start, so this node can only say so.
+    if (!ros::Time::isSimTime())
+      ROS_WARN(
+          "publish_clock is true but /use_sim_time is not: this node stamps everything in sim "
+          "time while nodes started without /use_sim_time read wall time; set /use_sim_time "
+          "before starting the nodes (sim.launch does with publish_clock:=true)");
+  }
 
   const std::string& initial_scene = options.config.data.scene;
   if (!initial_scene.empty()) {
