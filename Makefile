@@ -3,7 +3,7 @@
 # The scripts are development scripts run from the source tree with bash (not
 # executable): they build a workspace, so they have no place in an install space.
 SHELL := /bin/bash
-.PHONY: deps build test demo demo-gui bench bench-quick stress clean
+.PHONY: deps build test check-install demo demo-gui bench bench-quick stress clean
 
 deps:
 	@bash scripts/install_deps.sh build
@@ -13,6 +13,10 @@ build: deps
 
 test: deps
 	@bash scripts/run_tests.sh
+
+# make test runs it too; alone: install and run from the install space.
+check-install: deps
+	@bash scripts/check_install.sh
 
 demo: deps
 	@bash scripts/run_demo.sh $(ARGS)

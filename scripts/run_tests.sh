@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Builds, runs every gtest and rostest of the package and prints one closing
-# line "N passed, N failed"; exits non-zero when anything failed.
+# Builds, runs every gtest and rostest of the package and the convention
+# checks (launch args and files, catkin_lint -W1, the install space), and
+# prints one closing line "N passed, N failed"; exits non-zero when anything
+# failed.
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
 bash "${repo_root}/scripts/build.sh" tests
@@ -27,13 +29,21 @@ with open(path, "w") as xml:
     xml.write('<testsuite name="catkin_lint" tests="1"><testcase classname="catkin_lint" '
               'name="W1_clean">%s</testcase></testsuite>\n' % failure)
 PY
+# The package from an install space alone (about 20 s once built); after
+# run_tests, which empties the results directory, and outside it, since it
+# runs catkin_make install in the same build tree. Its junit result is
+# counted below like the others.
+/usr/bin/python3 "${repo_root}/test/checks/check_install_space.py" --workspace "${workspace}" \
+  --junit "${results}/install_space.xml" 2>&1 | tee -a "${workspace}/test.log"
+install_written=1
+[[ -s "${results}/install_space.xml" ]] || install_written=0
 set -e
 # The per-test lines of every suite, for the reader of the CI log.
 grep -h -E '^\[ +(OK|FAILED) +\]|^\[ROSTEST\]|^ *\* |FAILURE|ERROR' "${workspace}/test.log" \
   | grep -v -E 'FAILED TESTS?$' || true
-/usr/bin/python3 - "${results}" "${run_status}" <<'PY'
+/usr/bin/python3 - "${results}" "${run_status}" "${install_written}" <<'PY'
 import sys, glob, xml.etree.ElementTree as ET
-results_dir, run_status = sys.argv[1], int(sys.argv[2])
+results_dir, run_status, install_written = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 passed = failed = skipped = 0
 files = sorted(glob.glob(results_dir + "/**/*.xml", recursive=True))
 for path in files:
@@ -54,6 +64,9 @@ for path in files:
             passed += 1
 if not files:
     print("no test results were written")
+    failed += 1
+if not install_written:
+    print("the install space check wrote no result (see .catkin_ws/test.log)")
     failed += 1
 if run_status != 0 and failed == 0:
     print(f"catkin_make run_tests exited {run_status} (see .catkin_ws/test.log)")
