@@ -11,11 +11,17 @@ build_packages=(
   libros-rosgraph-msgs-dev libtf2-ros-dev
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
   libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
-  googletest libgtest-dev catkin-lint python3-rospkg
+  googletest libgtest-dev
+  libtf2-msgs-dev python3-rospkg python3-roslaunch
+  # make test's convention checks: catkin_lint, and the install space driven
+  # with rosrun, rospack, rosservice and rosparam (test/checks)
+  catkin-lint rospack-tools python3-rosservice python3-rosparam
   # teleop: the RViz brick placer
   libinteractive-markers-dev
 )
-gui_packages=(rviz xvfb imagemagick libgl1-mesa-dri)
+# RViz; scripts/screenshot_placer.sh also needs Xvfb, rostopic and ImageMagick.
+gui_packages=(rviz xvfb imagemagick libgl1-mesa-dri python3-rostopic)
+# plot_bench.py
 bench_packages=(python3-matplotlib)
 
 wanted=("${build_packages[@]}")
