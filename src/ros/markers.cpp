@@ -283,8 +283,7 @@ std_msgs::ColorRGBA brickColor(const BrickSnapshot& brick) {
   // and consecutive ones are 0.382 or 0.618 apart: the tones of neighbours
   // never coincide, and nothing random makes two runs look different.
   constexpr double kGoldenRatioFraction = 0.6180339887498949;
-  const double unit =
-      std::fmod(kGoldenRatioFraction * static_cast<double>(brickMarkerId(brick)), 1.0);
+  const double unit = std::fmod(kGoldenRatioFraction * static_cast<double>(brick.serial), 1.0);
   const float factor = static_cast<float>(1.0 + kWoodToneSpread * (2.0 * unit - 1.0));
   std_msgs::ColorRGBA color = brickColor(brickLook(brick));
   color.r = std::min(1.0f, color.r * factor);
@@ -324,13 +323,21 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
                                                  const ros::Time& stamp) {
   using visualization_msgs::Marker;
   visualization_msgs::MarkerArray array;
-  array.markers.reserve(2 * bricks.size() + 1);
+  array.markers.reserve(bricks.size() + 2);
   Marker clear;
   clear.header.frame_id = frame_id;
   clear.header.stamp = stamp;
   clear.ns = kBrickMarkerNamespace;
   clear.action = Marker::DELETEALL;
   array.markers.push_back(clear);
+  // One list for every outline: RViz builds an object per marker, and the
+  // whole array anew after each DELETEALL, so a marker per brick would
+  // double the work for a 2000-brick scene for lines that all look alike.
+  Marker edges =
+      newMarker(frame_id, stamp, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId, Marker::LINE_LIST);
+  edges.scale.x = kBrickEdgeWidth;         // LINE_LIST: only x, the line width
+  edges.color = rgb(0.16f, 0.10f, 0.05f);  // dark walnut: a seam, not a colour of its own
+  edges.points.reserve(24 * bricks.size());
 
   for (const BrickSnapshot& brick : bricks) {
     if (!allFinite(brick.pose) || !brick.size.allFinite()) continue;
@@ -341,8 +348,6 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
     box.color = brickColor(brick);
     array.markers.push_back(box);
 
-    Marker edges = newMarker(frame_id, stamp, kBrickEdgeMarkerNamespace, brickMarkerId(brick),
-                             Marker::LINE_LIST);
     const Eigen::Vector3d half = 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
     auto corner = [&](int i) {
       return Eigen::Vector3d(brick.pose * Eigen::Vector3d((i & 1) ? half.x() : -half.x(),
@@ -353,10 +358,8 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
     for (int i = 0; i < 8; ++i)
       for (int bit : {1, 2, 4})
         if (!(i & bit)) appendSegment(corner(i), corner(i | bit), &edges.points);
-    edges.scale.x = kBrickEdgeWidth;         // LINE_LIST: only x, the line width
-    edges.color = rgb(0.16f, 0.10f, 0.05f);  // dark walnut: a seam, not a colour of its own
-    array.markers.push_back(edges);
   }
+  if (!edges.points.empty()) array.markers.push_back(std::move(edges));
   return array;
 }
 

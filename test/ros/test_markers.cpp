@@ -161,7 +161,9 @@ TEST(StabilityMarkers, StableBrickOnTheTableHasAGreenRayDownToTheTable) {
   const Marker* box = findMarker(array, kBrickMarkerNamespace, brickMarkerId(brick));
   ASSERT_NE(box, nullptr);
   EXPECT_EQ(box->color.a, 1.0f);
-  EXPECT_NE(findMarker(array, kBrickEdgeMarkerNamespace, brickMarkerId(brick)), nullptr);
+  const Marker* outline = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
+  ASSERT_NE(outline, nullptr);
+  EXPECT_EQ(outline->points.size(), 24u);
 }
 
 TEST(StabilityMarkers, RayIsRedOutsideTheSupportAndGreenInside) {
@@ -243,7 +245,10 @@ TEST(StabilityMarkers, IdsComeFromTheSerialAndOnlyDescribedBricksGetThem) {
   const MarkerArray array = makeMarkers(bricks, supports, TableOptions(), "world", ros::Time(2.0));
   EXPECT_EQ(array.markers[0].action, Marker::DELETEALL);
   EXPECT_EQ(countInNamespace(array, kBrickMarkerNamespace), 1 + 3);
-  EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), 3);
+  EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), 1);  // every outline in one
+  ASSERT_NE(findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId), nullptr);
+  EXPECT_EQ(findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId)->points.size(),
+            3u * 24u);
   EXPECT_EQ(countInNamespace(array, kComAboveMarkerNamespace), 2);
   EXPECT_EQ(countInNamespace(array, kContactMeshMarkerNamespace), 4);
   EXPECT_NE(findMarker(array, kComAboveMarkerNamespace, 3), nullptr);
@@ -553,43 +558,57 @@ TEST(BrickMarkers, EveryBoxIsOpaqueInEveryState) {
   }
 }
 
-TEST(BrickMarkers, OutlineIsTheTwelveEdgesOfTheBoxInDark) {
-  BrickSnapshot brick = brickAt("b", 7, {0.1, -0.2, 0.0117});
-  brick.pose.linear() =
+TEST(BrickMarkers, OutlinesAreTheTwelveEdgesOfEachBoxInDark) {
+  BrickSnapshot turned = brickAt("turned", 7, {0.1, -0.2, 0.0117});
+  turned.pose.linear() =
       Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.2, 0.1, 1.0).normalized()).toRotationMatrix();
-  const MarkerArray array = makeBrickMarkers({brick}, "world", ros::Time(1.0));
-  const Marker* edges = findMarker(array, kBrickEdgeMarkerNamespace, brickMarkerId(brick));
+  BrickSnapshot cube = brickAt("cube", 2, {-0.1, 0.05, 0.02});
+  cube.size = Eigen::Vector3d(0.04, 0.04, 0.04);
+  const std::vector<BrickSnapshot> bricks = {turned, cube};
+  const MarkerArray array = makeBrickMarkers(bricks, "world", ros::Time(1.0));
+  EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), 1);
+  const Marker* edges = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
   ASSERT_NE(edges, nullptr);
   EXPECT_EQ(edges->type, Marker::LINE_LIST);
-  ASSERT_EQ(edges->points.size(), 24u);
+  ASSERT_EQ(edges->points.size(), 2u * 24u);
   EXPECT_GT(edges->scale.x, 0.0);
   EXPECT_LT(edges->scale.x, 0.5 * test::kKaplaThickness) << "an outline, not a frame";
-  // Every segment, seen in the brick's frame, runs along one axis for the
-  // whole length of the box (inflated by kBrickEdgeInflation), with both
-  // ends at corners; the twelve together cover each axis four times.
-  const Eigen::Vector3d half = 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
-  int along[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < edges->points.size(); i += 2) {
-    const Eigen::Vector3d a = brick.pose.inverse() * toEigen(edges->points[i]);
-    const Eigen::Vector3d b = brick.pose.inverse() * toEigen(edges->points[i + 1]);
-    for (const Eigen::Vector3d& end : {a, b})
-      EXPECT_LT((end.cwiseAbs() - half).norm(), 1e-12) << "not at a corner";
-    const Eigen::Vector3d d = (b - a).cwiseAbs();
-    int axis = 0;
-    d.maxCoeff(&axis);
-    EXPECT_NEAR(d[axis], 2.0 * half[axis], 1e-12);
-    EXPECT_NEAR(d.sum() - d[axis], 0.0, 1e-12);
-    ++along[axis];
+  // Per brick, in order, every segment seen in the brick's frame runs along
+  // one axis for the whole length of the box (inflated by
+  // kBrickEdgeInflation), with both ends at corners; the twelve together
+  // cover each axis four times.
+  for (std::size_t b = 0; b < bricks.size(); ++b) {
+    SCOPED_TRACE(bricks[b].id);
+    const Eigen::Isometry3d& pose = bricks[b].pose;
+    const Eigen::Vector3d half =
+        0.5 * bricks[b].size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
+    int along[3] = {0, 0, 0};
+    for (std::size_t i = 24 * b; i < 24 * (b + 1); i += 2) {
+      const Eigen::Vector3d from = pose.inverse() * toEigen(edges->points[i]);
+      const Eigen::Vector3d to = pose.inverse() * toEigen(edges->points[i + 1]);
+      for (const Eigen::Vector3d& end : {from, to})
+        EXPECT_LT((end.cwiseAbs() - half).norm(), 1e-12) << "not at a corner";
+      const Eigen::Vector3d d = (to - from).cwiseAbs();
+      int axis = 0;
+      d.maxCoeff(&axis);
+      EXPECT_NEAR(d[axis], 2.0 * half[axis], 1e-12);
+      EXPECT_NEAR(d.sum() - d[axis], 0.0, 1e-12);
+      ++along[axis];
+    }
+    EXPECT_EQ(along[0], 4);
+    EXPECT_EQ(along[1], 4);
+    EXPECT_EQ(along[2], 4);
   }
-  EXPECT_EQ(along[0], 4);
-  EXPECT_EQ(along[1], 4);
-  EXPECT_EQ(along[2], 4);
   // Darker than the darkest wood it outlines.
   const float brightness = edges->color.r + edges->color.g + edges->color.b;
   for (BrickLook look : kAllBrickLooks) {
     const std_msgs::ColorRGBA tint = brickColor(look);
     EXPECT_LT(brightness, 0.5f * (tint.r + tint.g + tint.b)) << lookName(look);
   }
+  // No bricks, no outline (RViz flags an empty LINE_LIST).
+  EXPECT_EQ(
+      countInNamespace(makeBrickMarkers({}, "world", ros::Time(1.0)), kBrickEdgeMarkerNamespace),
+      0);
 }
 
 TEST(BrickMarkers, NeighbouringBricksGetDifferentColoursThatStayTheSame) {
@@ -819,7 +838,7 @@ TEST(AllMarkers, TableAndLegendComeWithEveryArrayAfterItsDeleteAll) {
     EXPECT_EQ(countInNamespace(array, kTableMarkerNamespace), 6);
     EXPECT_EQ(countInNamespace(array, kLegendMarkerNamespace),
               static_cast<int>(legendEntries().size()));
-    EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), static_cast<int>(bricks.size()));
+    EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), bricks.empty() ? 0 : 1);
   }
 }
 
@@ -862,10 +881,10 @@ TEST(AllMarkers, NoNaNReachesAnyMarker) {
   // The good brick is all there; the broken ones' boxes are left out.
   EXPECT_NE(findMarker(array, kBrickMarkerNamespace, 0), nullptr);
   EXPECT_NE(findMarker(array, kComAboveMarkerNamespace, 0), nullptr);
-  for (int id : {1, 2, 3}) {
-    EXPECT_EQ(findMarker(array, kBrickMarkerNamespace, id), nullptr) << id;
-    EXPECT_EQ(findMarker(array, kBrickEdgeMarkerNamespace, id), nullptr) << id;
-  }
+  for (int id : {1, 2, 3}) EXPECT_EQ(findMarker(array, kBrickMarkerNamespace, id), nullptr) << id;
+  const Marker* outlines = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
+  ASSERT_NE(outlines, nullptr);
+  EXPECT_EQ(outlines->points.size(), 2u * 24u);  // the good brick's and the massless one's
   EXPECT_EQ(countInNamespace(array, kTableMarkerNamespace), 0);
 }
 

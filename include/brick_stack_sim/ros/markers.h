@@ -26,11 +26,13 @@ constexpr char kContactMeshMarkerNamespace[] = "contact_mesh";
 /// Per brick that statics solved for: its contact points, the contact
 /// forces on it as arrows and the friction cones they must stay in.
 constexpr char kLeaningMarkerNamespace[] = "leaning";
-/// Per brick: the twelve edges of its box, dark. Boxes of one wood that touch
-/// would otherwise run together into one block; and with `bricks` switched
-/// off the outlines stay, so the stack reads as a wire frame around the rays
-/// and meshes inside it.
+/// The twelve edges of every brick's box, dark, in one marker (id
+/// kBrickEdgesMarkerId). Boxes of one wood that touch would otherwise run
+/// together into one block; and with `bricks` switched off the outlines
+/// stay, so the stack reads as a wire frame around the rays and meshes
+/// inside it.
 constexpr char kBrickEdgeMarkerNamespace[] = "brick_edges";
+constexpr int kBrickEdgesMarkerId = 0;
 /// The table top (id 0), the floor under it (id 1) and four legs (ids 2-5).
 constexpr char kTableMarkerNamespace[] = "table";
 /// Text facing the viewer over the table: what each colour means.
@@ -124,23 +126,23 @@ const char* lookName(BrickLook look);
 /// (amber leaning, blue-grey dynamic, slate asleep, violet held, red fell off).
 std_msgs::ColorRGBA brickColor(BrickLook look);
 /// The colour of one brick's box: its look's tint, lighter or darker by up to
-/// kWoodToneSpread by its marker id, as two planks of one wood differ. The
-/// id's step along the golden ratio makes bricks placed one after another (a
+/// kWoodToneSpread by its marker id (serial), as two planks of one wood
+/// differ. The id's step along the golden ratio makes bricks placed one after another (a
 /// layer's neighbours, a brick and the one on it) differ by at least 0.38 of
 /// the spread, and the same brick keep its tone for its whole life.
 std_msgs::ColorRGBA brickColor(const BrickSnapshot& brick);
 
 /// Marker id of a brick: its placement serial, so a brick keeps its marker for
-/// its whole life and a new brick never inherits an old one's. Its outline in
-/// kBrickEdgeMarkerNamespace has the same id.
+/// its whole life and a new brick never inherits an old one's.
 int brickMarkerId(const BrickSnapshot& brick);
 
 /// After one DELETEALL marker (so that bricks removed since the last array
 /// disappear, and with them everything else the display shows), per brick in
 /// `frame_id`: a CUBE (scale = size [m], pose of its centre, opaque,
-/// brickColor(brick)) in kBrickMarkerNamespace and a LINE_LIST of its
-/// twelve edges (kBrickEdgeInflation outside the box, dark brown) in
-/// kBrickEdgeMarkerNamespace. Bricks with a non-finite pose or size are left
+/// brickColor(brick)) in kBrickMarkerNamespace; then one LINE_LIST of the
+/// twelve edges of every box (kBrickEdgeInflation outside it, dark brown),
+/// 24 points a brick in the order of `bricks`, in kBrickEdgeMarkerNamespace
+/// (none without bricks). Bricks with a non-finite pose or size are left
 /// out (RViz would drop the whole array).
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
