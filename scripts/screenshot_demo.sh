@@ -74,7 +74,7 @@ roslaunch brick_stack_sim sim.launch scene:="${scene}" mode:="${mode}" gui:=true
 pids+=($!)
 
 # RViz is ready when it listens to the markers; the simulator when it serves
-# ~step (advertised last).
+# ~step (advertised after ~pause and ~reset).
 # (Not "rostopic | grep -q": with pipefail, grep's early exit fails the pipe.)
 rviz_listens() { [[ "$(rostopic info /brick_sim/markers 2>/dev/null)" == *"/rviz"* ]]; }
 for _ in $(seq 120); do rviz_listens && break; sleep 0.5; done
