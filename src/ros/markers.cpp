@@ -19,6 +19,18 @@ std_msgs::ColorRGBA rgb(float r, float g, float b, float a = 1.0f) {
   return color;
 }
 
+std_msgs::ColorRGBA opaque(std_msgs::ColorRGBA color) {
+  color.a = 1.0f;  // text: a translucent legend would be harder to read
+  return color;
+}
+
+// The colours of the stability layer, shared with the legend.
+std_msgs::ColorRGBA contactPointColor() { return rgb(1.00f, 1.00f, 1.00f); }        // white
+std_msgs::ColorRGBA forceArrowColor() { return rgb(0.95f, 0.10f, 0.85f); }          // magenta
+std_msgs::ColorRGBA frictionConeColor() { return rgb(0.10f, 0.85f, 0.95f, 0.3f); }  // cyan
+std_msgs::ColorRGBA patchColor() { return rgb(0.10f, 0.55f, 1.00f, 0.90f); }        // blue
+std_msgs::ColorRGBA hullColor() { return rgb(1.00f, 0.85f, 0.10f, 0.35f); }  // translucent yellow
+
 /// A marker with everything but its geometry: header, namespace, id, ADD, and
 /// an identity pose (RViz warns about the all-zero quaternion of a default one).
 visualization_msgs::Marker newMarker(const std::string& frame_id, const ros::Time& stamp,
@@ -200,10 +212,11 @@ void appendContactForces(const BrickSnapshot& brick, const SupportGeometry& geom
       appendCone(f.point, -f.normal, height, f.friction, &cones.points);
   }
   points.scale.x = points.scale.y = points.scale.z = kContactPointSize;
-  arrows.scale.x = cones.scale.x = kForceLineWidth;  // LINE_LIST: only x, the line width
-  points.color = rgb(1.00f, 1.00f, 1.00f);           // white
-  arrows.color = rgb(0.95f, 0.10f, 0.85f);           // magenta
-  cones.color = rgb(0.10f, 0.85f, 0.95f, 0.4f);      // translucent cyan
+  arrows.scale.x = kForceLineWidth;  // LINE_LIST: only x, the line width
+  cones.scale.x = kFrictionConeLineWidth;
+  points.color = contactPointColor();
+  arrows.color = forceArrowColor();
+  cones.color = frictionConeColor();
   for (Marker* marker : {&points, &arrows, &cones})
     if (!marker->points.empty()) array->markers.push_back(std::move(*marker));
 }
@@ -225,22 +238,58 @@ BrickLook brickLook(const BrickSnapshot& brick) {
   return brick.asleep ? BrickLook::kAsleep : BrickLook::kDynamic;
 }
 
-std_msgs::ColorRGBA brickColor(BrickLook look) {
+const char* lookName(BrickLook look) {
   switch (look) {
     case BrickLook::kFellOff:
-      return rgb(0.85f, 0.10f, 0.10f);  // red
+      return "fell off";
     case BrickLook::kHeld:
-      return rgb(0.60f, 0.25f, 0.85f);  // violet
+      return "held";
     case BrickLook::kLeaning:
-      return rgb(1.00f, 0.60f, 0.00f);  // orange
+      return "leaning";
     case BrickLook::kStable:
-      return rgb(0.15f, 0.70f, 0.25f);  // green
+      return "stable";
     case BrickLook::kAsleep:
-      return rgb(0.45f, 0.55f, 0.75f);  // grey-blue
+      return "asleep";
     case BrickLook::kDynamic:
-      return rgb(0.90f, 0.78f, 0.55f);  // pine
+      return "dynamic";
+  }
+  return "?";
+}
+
+std_msgs::ColorRGBA brickColor(BrickLook look) {
+  // Stable is the common case and the calm one: the plank's own pine. The
+  // others are tints a viewer names at once, each at least 0.25 from every
+  // other in RGB, far more than the wood tone's spread, and no channel so
+  // bright that the tone's lighter half would clip (test_markers checks).
+  switch (look) {
+    case BrickLook::kFellOff:
+      return rgb(0.86f, 0.22f, 0.18f);  // red
+    case BrickLook::kHeld:
+      return rgb(0.72f, 0.42f, 0.90f);  // violet
+    case BrickLook::kLeaning:
+      return rgb(0.90f, 0.52f, 0.10f);  // amber
+    case BrickLook::kStable:
+      return rgb(0.87f, 0.71f, 0.47f);  // pine
+    case BrickLook::kAsleep:
+      return rgb(0.52f, 0.52f, 0.54f);  // slate grey
+    case BrickLook::kDynamic:
+      return rgb(0.58f, 0.70f, 0.88f);  // blue-grey
   }
   return rgb(1.0f, 1.0f, 1.0f);
+}
+
+std_msgs::ColorRGBA brickColor(const BrickSnapshot& brick) {
+  // The fractional parts of n times the golden ratio spread evenly over [0, 1)
+  // and consecutive ones are 0.382 or 0.618 apart: the tones of neighbours
+  // never coincide, and nothing random makes two runs look different.
+  constexpr double kGoldenRatioFraction = 0.6180339887498949;
+  const double unit = std::fmod(kGoldenRatioFraction * static_cast<double>(brick.serial), 1.0);
+  const float factor = static_cast<float>(1.0 + kWoodToneSpread * (2.0 * unit - 1.0));
+  std_msgs::ColorRGBA color = brickColor(brickLook(brick));
+  color.r = std::min(1.0f, color.r * factor);
+  color.g = std::min(1.0f, color.g * factor);
+  color.b = std::min(1.0f, color.b * factor);
+  return color;
 }
 
 int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.serial); }
@@ -271,31 +320,152 @@ std_msgs::ColorRGBA comAboveColor(double margin) {
 
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
-                                                 const ros::Time& stamp, float alpha) {
+                                                 const ros::Time& stamp) {
+  using visualization_msgs::Marker;
   visualization_msgs::MarkerArray array;
-  array.markers.reserve(bricks.size() + 1);
-  visualization_msgs::Marker clear;
+  array.markers.reserve(bricks.size() + 2);
+  Marker clear;
   clear.header.frame_id = frame_id;
   clear.header.stamp = stamp;
   clear.ns = kBrickMarkerNamespace;
-  clear.action = visualization_msgs::Marker::DELETEALL;
+  clear.action = Marker::DELETEALL;
   array.markers.push_back(clear);
+  // One list for every outline: RViz builds an object per marker, and the
+  // whole array anew after each DELETEALL, so a marker per brick would
+  // double the work for a 2000-brick scene for lines that all look alike.
+  Marker edges =
+      newMarker(frame_id, stamp, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId, Marker::LINE_LIST);
+  edges.scale.x = kBrickEdgeWidth;         // LINE_LIST: only x, the line width
+  edges.color = rgb(0.16f, 0.10f, 0.05f);  // dark walnut: a seam, not a colour of its own
+  edges.points.reserve(24 * bricks.size());
 
   for (const BrickSnapshot& brick : bricks) {
     if (!allFinite(brick.pose) || !brick.size.allFinite()) continue;
-    visualization_msgs::Marker marker;
-    marker.header.frame_id = frame_id;
-    marker.header.stamp = stamp;
-    marker.ns = kBrickMarkerNamespace;
-    marker.id = brickMarkerId(brick);
-    marker.type = visualization_msgs::Marker::CUBE;
-    marker.action = visualization_msgs::Marker::ADD;
-    marker.pose = toPoseMsg(brick.pose);
-    marker.scale = toVectorMsg(brick.size);
-    marker.color = brickColor(brickLook(brick));
-    marker.color.a = alpha;
-    marker.frame_locked = false;
+    Marker box =
+        newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
+    box.pose = toPoseMsg(brick.pose);
+    box.scale = toVectorMsg(brick.size);
+    box.color = brickColor(brick);
+    array.markers.push_back(box);
+
+    const Eigen::Vector3d half = 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
+    auto corner = [&](int i) {
+      return Eigen::Vector3d(brick.pose * Eigen::Vector3d((i & 1) ? half.x() : -half.x(),
+                                                          (i & 2) ? half.y() : -half.y(),
+                                                          (i & 4) ? half.z() : -half.z()));
+    };
+    // The corners i and i + bit differ along one axis: every edge once.
+    for (int i = 0; i < 8; ++i)
+      for (int bit : {1, 2, 4})
+        if (!(i & bit)) appendSegment(corner(i), corner(i | bit), &edges.points);
+  }
+  if (!edges.points.empty()) array.markers.push_back(std::move(edges));
+  return array;
+}
+
+visualization_msgs::MarkerArray makeTableMarkers(const TableOptions& table,
+                                                 const std::string& frame_id,
+                                                 const ros::Time& stamp) {
+  using visualization_msgs::Marker;
+  visualization_msgs::MarkerArray array;
+  const double length = table.size.x();
+  const double width = table.size.y();
+  for (double d : {length, width, table.thickness, table.height})
+    if (!std::isfinite(d) || !(d > 0.0)) return array;
+
+  auto box = [&](int id, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
+                 const std_msgs::ColorRGBA& color) {
+    Marker marker = newMarker(frame_id, stamp, kTableMarkerNamespace, id, Marker::CUBE);
+    marker.pose.position = toPointMsg(centre);
+    marker.scale = toVectorMsg(size);
+    marker.color = color;
     array.markers.push_back(marker);
+  };
+  // Light grey, so that pine and every tint stand out on it, and so that a
+  // top seen at a grazing angle (RViz lights along the view) still stands
+  // out from the background; the dark edges of the lowest layer show on it.
+  const std_msgs::ColorRGBA top = rgb(0.80f, 0.80f, 0.82f);
+  box(0, Eigen::Vector3d(0.0, 0.0, -0.5 * table.thickness),
+      Eigen::Vector3d(length, width, table.thickness), top);
+  // The floor, wider than the table by a table's width on every side: what
+  // falls off lands there (fell-off bricks, red).
+  constexpr double kFloorThickness = 0.01;  // [m]
+  box(1, Eigen::Vector3d(0.0, 0.0, -table.height - 0.5 * kFloorThickness),
+      Eigen::Vector3d(length + 2.0 * width, 3.0 * width, kFloorThickness),
+      rgb(0.45f, 0.46f, 0.48f));
+  const double leg = std::min(0.05, 0.1 * std::min(length, width));  // [m], square
+  const double leg_height = table.height - table.thickness;
+  if (leg_height > 0.0) {
+    for (int i = 0; i < 4; ++i) {
+      const double x = (i & 1 ? 1.0 : -1.0) * (0.5 * length - leg);
+      const double y = (i & 2 ? 1.0 : -1.0) * (0.5 * width - leg);
+      box(2 + i, Eigen::Vector3d(x, y, -table.thickness - 0.5 * leg_height),
+          Eigen::Vector3d(leg, leg, leg_height), rgb(0.62f, 0.63f, 0.65f));
+    }
+  }
+  return array;
+}
+
+std::vector<LegendEntry> legendEntries() {
+  // Short lines: the legend stands beside the bricks in the default view,
+  // where a long line would reach over them.
+  std::vector<LegendEntry> entries;
+  entries.push_back({"brick colour = state", rgb(0.95f, 0.95f, 0.95f)});
+  for (BrickLook look : kAllBrickLooks) {
+    const char* meaning = "";
+    switch (look) {
+      case BrickLook::kStable:
+        meaning = "frozen, resting";
+        break;
+      case BrickLook::kLeaning:
+        meaning = "frozen, by friction";
+        break;
+      case BrickLook::kDynamic:
+        meaning = "moving (Bullet)";
+        break;
+      case BrickLook::kAsleep:
+        meaning = "Bullet sleeps it";
+        break;
+      case BrickLook::kHeld:
+        meaning = "teleop or planner";
+        break;
+      case BrickLook::kFellOff:
+        meaning = "off the table";
+        break;
+    }
+    entries.push_back({std::string(lookName(look)) + ": " + meaning, brickColor(look)});
+  }
+  entries.push_back({"ray: COM-above to support", comAboveColor(1.0)});
+  entries.push_back({"red ray: COM-above outside", comAboveColor(-1.0)});
+  entries.push_back({"blue: contacts, yellow: hull", opaque(patchColor())});
+  entries.push_back({"arrows: force, 1/3 plank = weight", forceArrowColor()});
+  entries.push_back({"cyan: friction cones", opaque(frictionConeColor())});
+  entries.push_back({"untick 'bricks' to see inside", rgb(0.75f, 0.75f, 0.75f)});
+  return entries;
+}
+
+visualization_msgs::MarkerArray makeLegendMarkers(const TableOptions& table,
+                                                  const std::string& frame_id,
+                                                  const ros::Time& stamp) {
+  using visualization_msgs::Marker;
+  visualization_msgs::MarkerArray array;
+  if (!table.size.allFinite() || !(table.size.minCoeff() > 0.0)) return array;
+  // Over the table, back right of the default view (config/demo.rviz looks
+  // along +y, slightly toward -x): beside a tower or a card house at the
+  // centre, in front of nothing. A small table pulls it in to its corner.
+  const double x = std::min(kLegendOffsetX, 0.5 * table.size.x());
+  const double y = std::min(kLegendOffsetY, 0.5 * table.size.y());
+  const std::vector<LegendEntry> entries = legendEntries();
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    Marker line = newMarker(frame_id, stamp, kLegendMarkerNamespace, static_cast<int>(i),
+                            Marker::TEXT_VIEW_FACING);
+    line.pose.position.x = x;
+    line.pose.position.y = y;
+    line.pose.position.z = kLegendTop - static_cast<double>(i) * kLegendLineSpacing;
+    line.scale.z = kLegendTextHeight;  // TEXT_VIEW_FACING: only z, the height of a capital
+    line.text = entries[i].text;
+    line.color = entries[i].color;
+    array.markers.push_back(line);
   }
   return array;
 }
@@ -340,8 +510,8 @@ visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnap
     appendFan(geometry.combined_hull, 0.5 * kContactMeshLift, &hull.points);
     patches.scale.x = patches.scale.y = patches.scale.z = 1.0;  // TRIANGLE_LIST: a factor
     hull.scale = patches.scale;
-    patches.color = rgb(0.10f, 0.55f, 1.00f, 0.90f);  // blue
-    hull.color = rgb(1.00f, 0.85f, 0.10f, 0.35f);     // translucent yellow
+    patches.color = patchColor();
+    hull.color = hullColor();
     // Empty lists are left out (RViz flags a TRIANGLE_LIST without points as
     // an error); the DELETEALL at the head of every array removes old ones.
     if (!patches.points.empty()) array.markers.push_back(patches);
@@ -353,12 +523,13 @@ visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnap
 
 visualization_msgs::MarkerArray makeMarkers(const std::vector<BrickSnapshot>& bricks,
                                             const SupportGeometryMap& supports,
-                                            const std::string& frame_id, const ros::Time& stamp,
-                                            float brick_alpha) {
-  visualization_msgs::MarkerArray array = makeBrickMarkers(bricks, frame_id, stamp, brick_alpha);
-  visualization_msgs::MarkerArray stability =
-      makeStabilityMarkers(bricks, supports, frame_id, stamp);
-  array.markers.insert(array.markers.end(), stability.markers.begin(), stability.markers.end());
+                                            const TableOptions& table, const std::string& frame_id,
+                                            const ros::Time& stamp) {
+  visualization_msgs::MarkerArray array = makeBrickMarkers(bricks, frame_id, stamp);
+  for (const visualization_msgs::MarkerArray& part :
+       {makeTableMarkers(table, frame_id, stamp), makeLegendMarkers(table, frame_id, stamp),
+        makeStabilityMarkers(bricks, supports, frame_id, stamp)})
+    array.markers.insert(array.markers.end(), part.markers.begin(), part.markers.end());
   return array;
 }
 

@@ -263,11 +263,9 @@ void SimNode::publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros
     if (simulation_->world().supportGeometry(brick.id, &geometry))
       supports.emplace(brick.id, geometry);
   }
-  // In mode none there is nothing inside the bricks to see through them for.
-  const float alpha =
-      options_.config.world.stability.mode == "none" ? 1.0f : kTranslucentBrickAlpha;
-  markers_publisher_.publish(
-      makeMarkers(bricks, supports, options_.config.publish.frame_id, stamp, alpha));
+  // The world's table, not the parameters': a scene may bring its own.
+  markers_publisher_.publish(makeMarkers(bricks, supports, simulation_->world().options().table,
+                                         options_.config.publish.frame_id, stamp));
 }
 
 void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused) {

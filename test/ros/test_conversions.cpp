@@ -289,20 +289,28 @@ TEST(Markers, OneCubePerBrickAfterDeleteAll) {
   bricks[2].serial = 9;
   bricks[2].pose.translation().z() = kNaN;  // left out, not sent to RViz
   const auto array = makeBrickMarkers(bricks, "world", ros::Time(3.0));
-  ASSERT_EQ(array.markers.size(), 3u);
+  // DELETEALL, a box per finite brick, and one list of their outlines.
+  ASSERT_EQ(array.markers.size(), 4u);
   EXPECT_EQ(array.markers[0].action, visualization_msgs::Marker::DELETEALL);
+  std::vector<const visualization_msgs::Marker*> boxes;
   for (std::size_t i = 1; i < array.markers.size(); ++i) {
     const auto& marker = array.markers[i];
+    EXPECT_EQ(marker.header.frame_id, "world");
+    if (marker.ns == "brick_edges") {
+      EXPECT_EQ(marker.type, visualization_msgs::Marker::LINE_LIST);
+      continue;
+    }
     EXPECT_EQ(marker.type, visualization_msgs::Marker::CUBE);
     EXPECT_EQ(marker.ns, "bricks");
-    EXPECT_EQ(marker.header.frame_id, "world");
     EXPECT_EQ(marker.scale.x, 0.117);
     EXPECT_EQ(marker.color.a, 1.0f);
+    boxes.push_back(&marker);
   }
-  EXPECT_EQ(array.markers[1].id, 0);
-  EXPECT_EQ(array.markers[2].id, 4);
-  const auto& stable = array.markers[1].color;
-  const auto& dynamic = array.markers[2].color;
+  ASSERT_EQ(boxes.size(), 2u);
+  EXPECT_EQ(boxes[0]->id, 0);
+  EXPECT_EQ(boxes[1]->id, 4);
+  const auto& stable = boxes[0]->color;
+  const auto& dynamic = boxes[1]->color;
   EXPECT_TRUE(stable.r != dynamic.r || stable.g != dynamic.g || stable.b != dynamic.b);
 }
 

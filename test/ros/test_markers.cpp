@@ -1,7 +1,8 @@
-// ~markers as a pure function of snapshots and support geometry: boxes,
-// COM-above rays, contact meshes and contact forces, checked against
-// geometry computed here (areas, heights, cone angles) and against a real
-// world in mode com.
+// ~markers as a pure function of snapshots, support geometry and the table:
+// opaque boxes with outlines, COM-above rays, contact meshes, contact forces,
+// the table and the legend, checked against geometry computed here (areas,
+// heights, cone angles, corners) and against a real world in mode com.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -123,7 +124,7 @@ TEST(StabilityMarkers, StableBrickOnTheTableHasAGreenRayDownToTheTable) {
   SupportGeometryMap supports;
   ASSERT_TRUE(world->supportGeometry("lone", &supports["lone"]));
 
-  const MarkerArray array = makeMarkers({brick}, supports, "world", ros::Time(1.0), 0.45f);
+  const MarkerArray array = makeMarkers({brick}, supports, TableOptions(), "world", ros::Time(1.0));
   ASSERT_FALSE(array.markers.empty());
   EXPECT_EQ(array.markers[0].action, Marker::DELETEALL);
   expectAllFinite(array);
@@ -155,10 +156,14 @@ TEST(StabilityMarkers, StableBrickOnTheTableHasAGreenRayDownToTheTable) {
     EXPECT_GT(p.z, 0.0) << "not raised above the table";
     EXPECT_LT(p.z, 0.001) << "raised far above the table";
   }
-  // Boxes are translucent so that the ray and the mesh inside them show.
+  // The box is opaque: the ray and the mesh inside it show where it is
+  // switched off, inside its outline.
   const Marker* box = findMarker(array, kBrickMarkerNamespace, brickMarkerId(brick));
   ASSERT_NE(box, nullptr);
-  EXPECT_FLOAT_EQ(box->color.a, 0.45f);
+  EXPECT_EQ(box->color.a, 1.0f);
+  const Marker* outline = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
+  ASSERT_NE(outline, nullptr);
+  EXPECT_EQ(outline->points.size(), 24u);
 }
 
 TEST(StabilityMarkers, RayIsRedOutsideTheSupportAndGreenInside) {
@@ -237,9 +242,13 @@ TEST(StabilityMarkers, IdsComeFromTheSerialAndOnlyDescribedBricksGetThem) {
   supports["a"] = squareSupport(bricks[0].pose.translation(), 0.01, 0.0, 0.0);
   supports["b"] = squareSupport(bricks[1].pose.translation(), 0.01, 0.0, 0.0);
   // c: not described (mode none, or a brick in free fall).
-  const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(2.0), 1.0f);
+  const MarkerArray array = makeMarkers(bricks, supports, TableOptions(), "world", ros::Time(2.0));
   EXPECT_EQ(array.markers[0].action, Marker::DELETEALL);
   EXPECT_EQ(countInNamespace(array, kBrickMarkerNamespace), 1 + 3);
+  EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), 1);  // every outline in one
+  ASSERT_NE(findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId), nullptr);
+  EXPECT_EQ(findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId)->points.size(),
+            3u * 24u);
   EXPECT_EQ(countInNamespace(array, kComAboveMarkerNamespace), 2);
   EXPECT_EQ(countInNamespace(array, kContactMeshMarkerNamespace), 4);
   EXPECT_NE(findMarker(array, kComAboveMarkerNamespace, 3), nullptr);
@@ -457,7 +466,7 @@ TEST(LeaningMarkers, AVFromTheWorldDrawsForcesThatCarryEachPlank) {
   test::runFor(world.get(), 0.2);
   const std::vector<BrickSnapshot> bricks = world->snapshot();
   const SupportGeometryMap supports = describedAs(*world, bricks, BrickState::kLeaning);
-  const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(1.0), 0.45f);
+  const MarkerArray array = makeMarkers(bricks, supports, TableOptions(), "world", ros::Time(1.0));
   expectAllFinite(array);
   for (const BrickSnapshot& b : bricks) {
     const Marker* arrows = leaningMarker(array, forceArrowsMarkerId(b));
@@ -481,7 +490,7 @@ TEST(StabilityMarkers, FrozenTowerFromTheWorld) {
   const std::vector<BrickSnapshot> bricks = world->snapshot();
   ASSERT_EQ(bricks.size(), 4u);
   const SupportGeometryMap supports = describedAs(*world, bricks, BrickState::kStable);
-  const MarkerArray array = makeMarkers(bricks, supports, "world", ros::Time(1.0), 0.45f);
+  const MarkerArray array = makeMarkers(bricks, supports, TableOptions(), "world", ros::Time(1.0));
   expectAllFinite(array);
   for (const BrickSnapshot& b : bricks) {
     const bool top = b.id == "t2" || b.id == "t3";
@@ -496,6 +505,387 @@ TEST(StabilityMarkers, FrozenTowerFromTheWorld) {
         top ? 2 * test::kKaplaWidth * test::kKaplaWidth : test::kKaplaLength * test::kKaplaWidth;
     EXPECT_NEAR(signedTriangleArea(*patches), face, 1e-6) << b.id;
   }
+}
+
+// --- boxes, outlines, table and legend -------------------------------------
+
+/// Euclidean distance of two colours in RGB [-].
+double colourDistance(const std_msgs::ColorRGBA& a, const std_msgs::ColorRGBA& b) {
+  return std::sqrt((a.r - b.r) * (a.r - b.r) + (a.g - b.g) * (a.g - b.g) +
+                   (a.b - b.b) * (a.b - b.b));
+}
+
+/// A brick of `look` with marker id `serial`.
+BrickSnapshot brickLooking(BrickLook look, unsigned serial) {
+  BrickSnapshot brick = brickAt("b" + std::to_string(serial), serial, {0.0, 0.0, 0.0039});
+  switch (look) {
+    case BrickLook::kFellOff:
+      brick.fell_off = true;
+      break;
+    case BrickLook::kHeld:
+      brick.state = BrickState::kHeld;
+      break;
+    case BrickLook::kLeaning:
+      brick.state = BrickState::kLeaning;
+      break;
+    case BrickLook::kStable:
+      brick.state = BrickState::kStable;
+      break;
+    case BrickLook::kAsleep:
+      brick.asleep = true;
+      break;
+    case BrickLook::kDynamic:
+      break;
+  }
+  EXPECT_EQ(brickLook(brick), look);
+  return brick;
+}
+
+TEST(BrickMarkers, EveryBoxIsOpaqueInEveryState) {
+  std::vector<BrickSnapshot> bricks;
+  unsigned serial = 0;
+  for (BrickLook look : kAllBrickLooks)
+    for (int k = 0; k < 5; ++k) bricks.push_back(brickLooking(look, serial++));
+  const MarkerArray array = makeBrickMarkers(bricks, "world", ros::Time(1.0));
+  EXPECT_EQ(countInNamespace(array, kBrickMarkerNamespace), 1 + static_cast<int>(bricks.size()));
+  for (const BrickSnapshot& brick : bricks) {
+    const Marker* box = findMarker(array, kBrickMarkerNamespace, brickMarkerId(brick));
+    ASSERT_NE(box, nullptr) << brick.id;
+    EXPECT_EQ(box->type, Marker::CUBE);
+    EXPECT_EQ(box->color.a, 1.0f) << brick.id << " is not opaque";
+    EXPECT_EQ(box->scale.x, brick.size.x());
+    EXPECT_EQ(box->scale.z, brick.size.z());
+  }
+}
+
+TEST(BrickMarkers, OutlinesAreTheTwelveEdgesOfEachBoxInDark) {
+  BrickSnapshot turned = brickAt("turned", 7, {0.1, -0.2, 0.0117});
+  turned.pose.linear() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.2, 0.1, 1.0).normalized()).toRotationMatrix();
+  BrickSnapshot cube = brickAt("cube", 2, {-0.1, 0.05, 0.02});
+  cube.size = Eigen::Vector3d(0.04, 0.04, 0.04);
+  const std::vector<BrickSnapshot> bricks = {turned, cube};
+  const MarkerArray array = makeBrickMarkers(bricks, "world", ros::Time(1.0));
+  EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), 1);
+  const Marker* edges = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
+  ASSERT_NE(edges, nullptr);
+  EXPECT_EQ(edges->type, Marker::LINE_LIST);
+  ASSERT_EQ(edges->points.size(), 2u * 24u);
+  EXPECT_GT(edges->scale.x, 0.0);
+  EXPECT_LT(edges->scale.x, 0.5 * test::kKaplaThickness) << "an outline, not a frame";
+  // Per brick, in order, every segment seen in the brick's frame runs along
+  // one axis for the whole length of the box (inflated by
+  // kBrickEdgeInflation), with both ends at corners; the twelve together
+  // cover each axis four times.
+  for (std::size_t b = 0; b < bricks.size(); ++b) {
+    SCOPED_TRACE(bricks[b].id);
+    const Eigen::Isometry3d& pose = bricks[b].pose;
+    const Eigen::Vector3d half =
+        0.5 * bricks[b].size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
+    int along[3] = {0, 0, 0};
+    for (std::size_t i = 24 * b; i < 24 * (b + 1); i += 2) {
+      const Eigen::Vector3d from = pose.inverse() * toEigen(edges->points[i]);
+      const Eigen::Vector3d to = pose.inverse() * toEigen(edges->points[i + 1]);
+      for (const Eigen::Vector3d& end : {from, to})
+        EXPECT_LT((end.cwiseAbs() - half).norm(), 1e-12) << "not at a corner";
+      const Eigen::Vector3d d = (to - from).cwiseAbs();
+      int axis = 0;
+      d.maxCoeff(&axis);
+      EXPECT_NEAR(d[axis], 2.0 * half[axis], 1e-12);
+      EXPECT_NEAR(d.sum() - d[axis], 0.0, 1e-12);
+      ++along[axis];
+    }
+    EXPECT_EQ(along[0], 4);
+    EXPECT_EQ(along[1], 4);
+    EXPECT_EQ(along[2], 4);
+  }
+  // Darker than the darkest wood it outlines.
+  const float brightness = edges->color.r + edges->color.g + edges->color.b;
+  for (BrickLook look : kAllBrickLooks) {
+    const std_msgs::ColorRGBA tint = brickColor(look);
+    EXPECT_LT(brightness, 0.5f * (tint.r + tint.g + tint.b)) << lookName(look);
+  }
+  // No bricks, no outline (RViz flags an empty LINE_LIST).
+  EXPECT_EQ(
+      countInNamespace(makeBrickMarkers({}, "world", ros::Time(1.0)), kBrickEdgeMarkerNamespace),
+      0);
+}
+
+TEST(BrickMarkers, NeighbouringBricksGetDifferentColoursThatStayTheSame) {
+  // Bricks placed one after another (neighbours in a layer, a brick and the
+  // one on it) differ in tone; the same brick keeps its tone.
+  for (BrickLook look : kAllBrickLooks) {
+    for (unsigned serial = 0; serial < 200; ++serial) {
+      const std_msgs::ColorRGBA a = brickColor(brickLooking(look, serial));
+      for (unsigned step : {1u, 2u}) {
+        const std_msgs::ColorRGBA b = brickColor(brickLooking(look, serial + step));
+        EXPECT_GT(colourDistance(a, b), 0.03) << lookName(look) << " " << serial << "+" << step;
+      }
+      EXPECT_EQ(colourDistance(a, brickColor(brickLooking(look, serial))), 0.0);
+    }
+  }
+  // Through the marker array too, two planks of a tower layer.
+  const std::vector<BrickSnapshot> layer = {brickLooking(BrickLook::kStable, 0),
+                                            brickLooking(BrickLook::kStable, 1)};
+  const MarkerArray array = makeBrickMarkers(layer, "world", ros::Time(1.0));
+  const Marker* first = findMarker(array, kBrickMarkerNamespace, 0);
+  const Marker* second = findMarker(array, kBrickMarkerNamespace, 1);
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(second, nullptr);
+  EXPECT_GT(colourDistance(first->color, second->color), 0.03);
+}
+
+TEST(BrickMarkers, EachStateHasItsTintAndTheWoodToneNeverBlursIt) {
+  for (BrickLook a : kAllBrickLooks) {
+    EXPECT_EQ(brickColor(a).a, 1.0f);
+    for (BrickLook b : kAllBrickLooks) {
+      if (a == b) continue;
+      EXPECT_GT(colourDistance(brickColor(a), brickColor(b)), 0.25)
+          << lookName(a) << " and " << lookName(b) << " are too close";
+    }
+  }
+  // The wood tone lightens a tint by up to kWoodToneSpread: no channel clips.
+  for (BrickLook look : kAllBrickLooks) {
+    const std_msgs::ColorRGBA tint = brickColor(look);
+    EXPECT_LE(std::max({tint.r, tint.g, tint.b}) * (1.0 + kWoodToneSpread), 1.0) << lookName(look);
+  }
+  // Stable is wood: warm (red over green over blue).
+  const std_msgs::ColorRGBA pine = brickColor(BrickLook::kStable);
+  EXPECT_GT(pine.r, pine.g);
+  EXPECT_GT(pine.g, pine.b);
+  // Dynamic is blue-grey, fell off is red.
+  EXPECT_GT(brickColor(BrickLook::kDynamic).b, brickColor(BrickLook::kDynamic).r);
+  EXPECT_TRUE(isRed(brickColor(BrickLook::kFellOff)));
+  // Whatever a brick's tone, the nearest tint is its own state's.
+  for (BrickLook look : kAllBrickLooks) {
+    for (unsigned serial = 0; serial < 500; ++serial) {
+      const std_msgs::ColorRGBA colour = brickColor(brickLooking(look, serial));
+      for (BrickLook other : kAllBrickLooks) {
+        if (other == look) continue;
+        EXPECT_LT(colourDistance(colour, brickColor(look)),
+                  colourDistance(colour, brickColor(other)))
+            << lookName(look) << " brick " << serial << " looks " << lookName(other);
+      }
+    }
+  }
+}
+
+TEST(StabilityMarkers, RayRunsFromTheCarriedComAboveDownToTheSupportAndReads) {
+  // A plank low in a tower: its COM-above (of it and its load) lies 10 cm
+  // up, far outside the plank, over a point off its centre.
+  const BrickSnapshot brick = brickAt("low", 4, {0.0, 0.047, 0.0117});
+  const Eigen::Vector3d com_above(0.003, 0.045, 0.1);
+  SupportGeometryMap supports;
+  supports["low"] = squareSupport(com_above, 0.0117, 0.0, 0.0078);
+  const MarkerArray array = makeStabilityMarkers({brick}, supports, "world", ros::Time(1.0));
+  const Marker* ray = findMarker(array, kComAboveMarkerNamespace, brickMarkerId(brick));
+  ASSERT_NE(ray, nullptr);
+  ASSERT_EQ(ray->type, Marker::LINE_LIST);
+  ASSERT_EQ(ray->points.size(), 6u);  // the ray and the two arms of the foot
+  EXPECT_LT((toEigen(ray->points[0]) - com_above).norm(), 1e-12);
+  EXPECT_LT((toEigen(ray->points[1]) - Eigen::Vector3d(0.003, 0.045, 0.0078)).norm(), 1e-12);
+  // The foot: a cross in the support plane centred under the COM-above,
+  // wider than a plank so that it shows on both sides of the one it lies on.
+  for (std::size_t i = 2; i < 6; i += 2) {
+    const Eigen::Vector3d a = toEigen(ray->points[i]);
+    const Eigen::Vector3d b = toEigen(ray->points[i + 1]);
+    EXPECT_NEAR(a.z(), 0.0078, 1e-12);
+    EXPECT_NEAR(b.z(), 0.0078, 1e-12);
+    EXPECT_LT((0.5 * (a + b) - toEigen(ray->points[1])).norm(), 1e-12);
+    EXPECT_GT((b - a).norm(), test::kKaplaWidth);
+  }
+  // Thick enough to read as a line at tower scale, thinner than a plank.
+  EXPECT_GE(ray->scale.x, 0.002);
+  EXPECT_LT(ray->scale.x, test::kKaplaThickness);
+  EXPECT_EQ(ray->color.a, 1.0f);
+}
+
+TEST(TableMarkers, TopMatchesTheTableOptionsAndTheFloorLiesWhereBricksFall) {
+  TableOptions table;
+  table.size = Eigen::Vector2d(0.9, 0.5);
+  table.thickness = 0.02;
+  table.height = 0.6;
+  const MarkerArray array = makeTableMarkers(table, "world", ros::Time(1.0));
+  expectAllFinite(array);
+  EXPECT_EQ(countInNamespace(array, kTableMarkerNamespace), static_cast<int>(array.markers.size()));
+  const Marker* top = findMarker(array, kTableMarkerNamespace, 0);
+  ASSERT_NE(top, nullptr);
+  EXPECT_EQ(top->type, Marker::CUBE);
+  EXPECT_EQ(top->header.frame_id, "world");
+  EXPECT_DOUBLE_EQ(top->scale.x, 0.9);
+  EXPECT_DOUBLE_EQ(top->scale.y, 0.5);
+  EXPECT_DOUBLE_EQ(top->scale.z, 0.02);
+  // Its upper face is the plane z = 0 bricks stand on, centred on the origin.
+  EXPECT_DOUBLE_EQ(top->pose.position.x, 0.0);
+  EXPECT_DOUBLE_EQ(top->pose.position.y, 0.0);
+  EXPECT_DOUBLE_EQ(top->pose.position.z + 0.5 * top->scale.z, 0.0);
+  EXPECT_EQ(top->color.a, 1.0f);
+  // Neither wood nor a tint: every brick stands out on it.
+  for (BrickLook look : kAllBrickLooks)
+    EXPECT_GT(colourDistance(top->color, brickColor(look)), 0.2) << lookName(look);
+
+  // The floor: its upper face `height` below the top, under all of the table.
+  const Marker* floor = findMarker(array, kTableMarkerNamespace, 1);
+  ASSERT_NE(floor, nullptr);
+  EXPECT_NEAR(floor->pose.position.z + 0.5 * floor->scale.z, -0.6, 1e-12);
+  EXPECT_GT(floor->scale.x, 0.9);
+  EXPECT_GT(floor->scale.y, 0.5);
+  // Four legs from the floor to the underside of the top, inside its outline.
+  for (int id = 2; id < 6; ++id) {
+    const Marker* leg = findMarker(array, kTableMarkerNamespace, id);
+    ASSERT_NE(leg, nullptr) << id;
+    EXPECT_NEAR(leg->pose.position.z + 0.5 * leg->scale.z, -0.02, 1e-12) << id;
+    EXPECT_NEAR(leg->pose.position.z - 0.5 * leg->scale.z, -0.6, 1e-12) << id;
+    EXPECT_LE(std::abs(leg->pose.position.x) + 0.5 * leg->scale.x, 0.45 + 1e-12) << id;
+    EXPECT_LE(std::abs(leg->pose.position.y) + 0.5 * leg->scale.y, 0.25 + 1e-12) << id;
+  }
+
+  // A table that is not one draws nothing rather than a NaN.
+  for (double bad : {kNaN, 0.0, -1.0}) {
+    TableOptions broken = table;
+    broken.size.x() = bad;
+    EXPECT_TRUE(makeTableMarkers(broken, "world", ros::Time(1.0)).markers.empty()) << bad;
+    broken = table;
+    broken.height = bad;
+    EXPECT_TRUE(makeTableMarkers(broken, "world", ros::Time(1.0)).markers.empty()) << bad;
+  }
+}
+
+TEST(LegendMarkers, OneLinePerStateInItsTintThenTheStabilityMarkers) {
+  const TableOptions table;
+  const MarkerArray array = makeLegendMarkers(table, "world", ros::Time(1.0));
+  expectAllFinite(array);
+  const std::vector<LegendEntry> entries = legendEntries();
+  ASSERT_EQ(array.markers.size(), entries.size());
+  // One line per look: its name, in its tint.
+  for (BrickLook look : kAllBrickLooks) {
+    const std::string name = std::string(lookName(look)) + ":";
+    int found = 0;
+    for (const Marker& line : array.markers) {
+      if (line.text.rfind(name, 0) != 0) continue;
+      ++found;
+      EXPECT_EQ(colourDistance(line.color, brickColor(look)), 0.0) << name;
+    }
+    EXPECT_EQ(found, 1) << name;
+  }
+  // And a line for each marker of the stability layer, in that marker's
+  // colour (made opaque: text), taken from markers drawn here.
+  const BrickSnapshot brick = brickAt("b", 1, {0.0, 0.0, 0.05});
+  SupportGeometry geometry = squareSupport(brick.pose.translation(), 0.01, 0.0, 0.046);
+  geometry.contact_forces = {
+      contactForce("table", {0.0, 0.0, 0.046}, Eigen::Vector3d::UnitZ(), {0.02, 0.0, 0.1})};
+  const MarkerArray drawn =
+      makeStabilityMarkers({brick}, SupportGeometryMap{{"b", geometry}}, "world", ros::Time(1.0));
+  const Marker* patches = findMarker(drawn, kContactMeshMarkerNamespace, patchMarkerId(brick));
+  const Marker* arrows = findMarker(drawn, kLeaningMarkerNamespace, forceArrowsMarkerId(brick));
+  const Marker* cones = findMarker(drawn, kLeaningMarkerNamespace, frictionConesMarkerId(brick));
+  ASSERT_TRUE(patches && arrows && cones);
+  auto line_with = [&](const std::string& word, const std_msgs::ColorRGBA& colour) {
+    for (const Marker& line : array.markers)
+      if (line.text.find(word) != std::string::npos && colourDistance(line.color, colour) < 1e-6)
+        return true;
+    return false;
+  };
+  EXPECT_TRUE(line_with("ray", comAboveColor(1.0)));
+  EXPECT_TRUE(line_with("ray", comAboveColor(-1.0)));
+  EXPECT_TRUE(line_with("contacts", patches->color));
+  EXPECT_TRUE(line_with("force", arrows->color));
+  EXPECT_TRUE(line_with("friction", cones->color));
+  EXPECT_TRUE(std::any_of(array.markers.begin(), array.markers.end(), [](const Marker& line) {
+    return line.text.find("'bricks'") != std::string::npos;
+  })) << "no line says how to see inside the stack";
+
+  // View-facing text in a column over the table, top line first.
+  for (std::size_t i = 0; i < array.markers.size(); ++i) {
+    const Marker& line = array.markers[i];
+    EXPECT_EQ(line.ns, kLegendMarkerNamespace);
+    EXPECT_EQ(line.id, static_cast<int>(i));
+    EXPECT_EQ(line.type, Marker::TEXT_VIEW_FACING);
+    EXPECT_EQ(line.text, entries[i].text);
+    EXPECT_FALSE(line.text.empty());
+    EXPECT_GT(line.scale.z, 0.0);
+    EXPECT_EQ(line.color.a, 1.0f);
+    EXPECT_LE(std::abs(line.pose.position.x), 0.5 * table.size.x());
+    EXPECT_LE(std::abs(line.pose.position.y), 0.5 * table.size.y());
+    EXPECT_GT(line.pose.position.z, 0.0) << "below the table top";
+    if (i > 0) {
+      EXPECT_EQ(line.pose.position.x, array.markers[0].pose.position.x);
+      EXPECT_NEAR(array.markers[i - 1].pose.position.z - line.pose.position.z, kLegendLineSpacing,
+                  1e-12);
+    }
+  }
+  // On a small table the legend stays over it.
+  TableOptions small;
+  small.size = Eigen::Vector2d(0.2, 0.1);
+  for (const Marker& line : makeLegendMarkers(small, "world", ros::Time(1.0)).markers) {
+    EXPECT_LE(std::abs(line.pose.position.x), 0.1 + 1e-12);
+    EXPECT_LE(std::abs(line.pose.position.y), 0.05 + 1e-12);
+  }
+}
+
+TEST(AllMarkers, TableAndLegendComeWithEveryArrayAfterItsDeleteAll) {
+  // An empty scene still shows the table and the legend; with bricks, they
+  // come after the DELETEALL that would otherwise remove them.
+  for (const std::vector<BrickSnapshot>& bricks :
+       {std::vector<BrickSnapshot>{},
+        std::vector<BrickSnapshot>{brickLooking(BrickLook::kStable, 0)}}) {
+    const MarkerArray array =
+        makeMarkers(bricks, SupportGeometryMap(), TableOptions(), "world", ros::Time(1.0));
+    ASSERT_FALSE(array.markers.empty());
+    EXPECT_EQ(array.markers[0].action, Marker::DELETEALL);
+    for (std::size_t i = 1; i < array.markers.size(); ++i)
+      EXPECT_EQ(array.markers[i].action, Marker::ADD) << i;
+    EXPECT_EQ(countInNamespace(array, kTableMarkerNamespace), 6);
+    EXPECT_EQ(countInNamespace(array, kLegendMarkerNamespace),
+              static_cast<int>(legendEntries().size()));
+    EXPECT_EQ(countInNamespace(array, kBrickEdgeMarkerNamespace), bricks.empty() ? 0 : 1);
+  }
+}
+
+TEST(AllMarkers, NoNaNReachesAnyMarker) {
+  // Bricks and support geometry with NaN and Inf in every field the markers
+  // read, next to a good brick, and a table with a NaN: RViz would drop the
+  // whole array for one of them.
+  std::vector<BrickSnapshot> bricks = {
+      brickAt("good", 0, {0.0, 0.0, 0.0039}), brickAt("pose", 1, {kNaN, 0.0, 0.0039}),
+      brickAt("size", 2, {0.1, 0.0, 0.0039}), brickAt("rotation", 3, {0.2, 0.0, 0.0039}),
+      brickAt("mass", 4, {0.3, 0.0, 0.0039})};
+  bricks[2].size.y() = std::numeric_limits<double>::infinity();
+  bricks[3].pose.linear()(0, 1) = kNaN;
+  bricks[4].mass = kNaN;
+  SupportGeometryMap supports;
+  for (const BrickSnapshot& b : bricks) {
+    const Eigen::Vector3d centre = b.pose.translation().allFinite()
+                                       ? Eigen::Vector3d(b.pose.translation())
+                                       : Eigen::Vector3d(0.0, 0.0, 0.0039);
+    supports[b.id] = squareSupport(centre, 0.01, 0.0, 0.0);
+  }
+  supports["good"].contact_forces = {
+      contactForce("table", {0.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(), {kNaN, 0.0, 0.1})};
+  supports["mass"].contact_forces = {
+      contactForce("table", {0.3, 0.0, 0.0}, Eigen::Vector3d::UnitZ(), {0.0, 0.0, 0.1})};
+  supports["pose"].com_above.x() = kNaN;
+  supports["size"].margin = std::numeric_limits<double>::infinity();
+  supports["rotation"].combined_hull[0].y() = kNaN;
+  TableOptions table;
+  table.thickness = kNaN;
+  const MarkerArray array = makeMarkers(bricks, supports, table, "world", ros::Time(1.0));
+  expectAllFinite(array);
+  for (const Marker& m : array.markers) {
+    for (float c : {m.color.r, m.color.g, m.color.b, m.color.a})
+      EXPECT_TRUE(std::isfinite(c)) << m.ns << " " << m.id;
+    EXPECT_TRUE(std::isfinite(m.pose.orientation.x) && std::isfinite(m.pose.orientation.y) &&
+                std::isfinite(m.pose.orientation.z))
+        << m.ns << " " << m.id;
+  }
+  // The good brick is all there; the broken ones' boxes are left out.
+  EXPECT_NE(findMarker(array, kBrickMarkerNamespace, 0), nullptr);
+  EXPECT_NE(findMarker(array, kComAboveMarkerNamespace, 0), nullptr);
+  for (int id : {1, 2, 3}) EXPECT_EQ(findMarker(array, kBrickMarkerNamespace, id), nullptr) << id;
+  const Marker* outlines = findMarker(array, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId);
+  ASSERT_NE(outlines, nullptr);
+  EXPECT_EQ(outlines->points.size(), 2u * 24u);  // the good brick's and the massless one's
+  EXPECT_EQ(countInNamespace(array, kTableMarkerNamespace), 0);
 }
 
 }  // namespace

@@ -89,7 +89,8 @@ class SimNode {
   ros::Time stamp() const;
   void publishEvents();
   void publishState();
-  /// ~markers for `bricks` (all finite): boxes, COM-above rays, contact meshes.
+  /// ~markers for `bricks` (all finite): boxes and their outlines, COM-above
+  /// rays, contact meshes and forces, the table and the legend.
   void publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp);
   void publishClock();
   /// `<frame_prefix>table` under the fixed frame, at the table top's centre.
