@@ -149,7 +149,7 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
 
   outcome->summary = ledger_.summary();
   outcome->met = ledger_.met(scene.expect, &outcome->verdict);
-  outcome->summary_line = formatSummary(scene.name, outcome->summary, ros::Time::now().toSec());
+  outcome->summary_line = formatSummary(scene.name, outcome->summary, clock(ros::Time::now()));
   return Status::success();
 }
 
