@@ -28,39 +28,18 @@ seconds="${4:-3}"
 source "$(dirname "$0")/env.sh"
 output="$(realpath -m "$3")"
 [[ "${seconds}" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "SECONDS must be a number: ${seconds}" >&2; exit 2; }
-"${repo_root}/scripts/install_deps.sh" gui
-"${repo_root}/scripts/build.sh" brick_stack_sim_node
+bash "${repo_root}/scripts/install_deps.sh" gui
+bash "${repo_root}/scripts/build.sh" brick_stack_sim_node
 mkdir -p "$(dirname "${output}")" "${workspace}/log"
 
-cd "${workspace}"
-# shellcheck disable=SC1091
-source devel/setup.bash
-export ROS_LOG_DIR="${workspace}/log"
-export ROS_MASTER_URI="http://localhost:${SCREENSHOT_MASTER_PORT:-11432}"
-# RViz needs GL; Xvfb has no GPU, so Mesa renders in software.
-export LIBGL_ALWAYS_SOFTWARE=1
-
-pids=()
-cleanup() {
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do kill "${pids[i]}" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-  if [[ -n "${hidden_config:-}" ]]; then rm -f "${hidden_config}"; fi
-}
-trap cleanup EXIT
-
-# -displayfd: Xvfb picks a free display and tells us which.
-display_file="$(mktemp)"
-Xvfb -displayfd 3 -screen 0 1200x800x24 -nolisten tcp 3>"${display_file}" 2>/dev/null &
-pids+=($!)
-for _ in $(seq 50); do [[ -s "${display_file}" ]] && break; sleep 0.1; done
-[[ -s "${display_file}" ]] || { echo "Xvfb did not start" >&2; exit 1; }
-export DISPLAY=":$(head -n1 "${display_file}")"
-rm -f "${display_file}"
+# shellcheck source=scripts/screenshot_session.sh
+source "${repo_root}/scripts/screenshot_session.sh" 11432
 
 # config/demo.rviz, or a copy of it with SCREENSHOT_HIDE's namespaces unticked.
 rviz_config=()
 if [[ -n "${SCREENSHOT_HIDE:-}" ]]; then
   hidden_config="$(mktemp --suffix=.rviz)"
+  extra_cleanup='rm -f "${hidden_config}"'
   cp "${repo_root}/config/demo.rviz" "${hidden_config}"
   for namespace in ${SCREENSHOT_HIDE}; do
     sed -i "s/^\( *\)${namespace}: true\$/\1${namespace}: false/" "${hidden_config}"

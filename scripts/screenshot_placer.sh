@@ -11,29 +11,8 @@ bash "${repo_root}/scripts/build.sh" brick_stack_sim_node brick_placer
 output="$(realpath -m "${1:-${repo_root}/docs/images/placer.png}")"
 mkdir -p "$(dirname "${output}")"
 
-cd "${workspace}"
-# shellcheck disable=SC1091
-source devel/setup.bash
-export ROS_LOG_DIR="${workspace}/log"
-export ROS_MASTER_URI="http://localhost:${SCREENSHOT_MASTER_PORT:-11431}"
-# RViz needs GL; Xvfb has no GPU, so Mesa renders in software.
-export LIBGL_ALWAYS_SOFTWARE=1
-
-pids=()
-cleanup() {
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do kill "${pids[i]}" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-}
-trap cleanup EXIT
-
-# -displayfd: Xvfb picks a free display and tells us which.
-display_file="$(mktemp)"
-Xvfb -displayfd 3 -screen 0 1200x800x24 -nolisten tcp 3>"${display_file}" 2>/dev/null &
-pids+=($!)
-for _ in $(seq 50); do [[ -s "${display_file}" ]] && break; sleep 0.1; done
-[[ -s "${display_file}" ]] || { echo "Xvfb did not start" >&2; exit 1; }
-export DISPLAY=":$(head -n1 "${display_file}")"
-rm -f "${display_file}"
+# shellcheck source=scripts/screenshot_session.sh
+source "${repo_root}/scripts/screenshot_session.sh" 11431
 
 # The tower is 10 layers (7.8 cm); the ghost hovers 7 cm above it where the
 # next layer's first brick goes (along x, over one side).
