@@ -1,8 +1,10 @@
 #include "brick_stack_sim/ros/markers.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace brick_stack_sim {
@@ -348,16 +350,13 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
     box.color = brickColor(brick);
     array.markers.push_back(box);
 
-    const Eigen::Vector3d half = 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation);
-    auto corner = [&](int i) {
-      return Eigen::Vector3d(brick.pose * Eigen::Vector3d((i & 1) ? half.x() : -half.x(),
-                                                          (i & 2) ? half.y() : -half.y(),
-                                                          (i & 4) ? half.z() : -half.z()));
-    };
-    // The corners i and i + bit differ along one axis: every edge once.
+    const std::array<Eigen::Vector3d, 8> corner = corners(
+        OrientedBox{brick.pose, 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation)});
+    // Corner i's bits say which side of each axis it lies on (corners()), so
+    // the corners i and i + bit differ along one axis: every edge once.
     for (int i = 0; i < 8; ++i)
       for (int bit : {1, 2, 4})
-        if (!(i & bit)) appendSegment(corner(i), corner(i | bit), &edges.points);
+        if (!(i & bit)) appendSegment(corner[i], corner[i | bit], &edges.points);
   }
   if (!edges.points.empty()) array.markers.push_back(std::move(edges));
   return array;
