@@ -123,12 +123,8 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
     while (last < bricks.size() && bricks[last].at == bricks[first].at) ++last;
     if (Status watched = watch(start + ros::Duration(bricks[first].at), {}, ros::Time()); !watched)
       return watched;
-    if (Status placed = placeGroup(bricks, first, last); !placed) return placed;
-
     std::vector<std::string> group;
-    for (std::size_t i = first; i < last; ++i)
-      if (ledger_.find(bricks[i].placement.id) && !isThrown(bricks[i]))
-        group.push_back(bricks[i].placement.id);
+    if (Status placed = placeGroup(bricks, first, last, &group); !placed) return placed;
     const ros::Time placed_at = ros::Time::now();
     const ros::Time next =
         last < bricks.size() ? start + ros::Duration(bricks[last].at) : placed_at;
@@ -154,7 +150,7 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
 }
 
 Status BlueprintBuilder::placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first,
-                                    std::size_t last) {
+                                    std::size_t last, std::vector<std::string>* structure) {
   const bool together = last - first > 1;
   std_srvs::SetBool pause;
   pause.request.data = true;
@@ -176,6 +172,7 @@ Status BlueprintBuilder::placeGroup(const std::vector<ScheduledBrick>& bricks, s
     }
     const bool thrown = isThrown(bricks[i]);
     ledger_.recordPlaced(place.response.id, brick.pose, clock(ros::Time::now()), thrown);
+    if (!thrown) structure->push_back(place.response.id);
     if (thrown)
       say("threw %s at %.2f m/s", place.response.id.c_str(), brick.linear_velocity.norm());
     else

@@ -65,8 +65,11 @@ class BlueprintBuilder {
 
  private:
   /// Places bricks [first, last) of the scene at once (paused in between, so
-  /// that two leaning bricks arrive together).
-  Status placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first, std::size_t last);
+  /// that two leaning bricks arrive together); appends to `structure` the ids
+  /// the simulator gave those it accepted that were not thrown (an empty id
+  /// in the scene becomes brick_<n>).
+  Status placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first, std::size_t last,
+                    std::vector<std::string>* structure);
   /// Looks at ~get_bricks and reports what fell.
   Status observe();
   /// Watches until `until` (sim time) and, when `group` is not empty, until
