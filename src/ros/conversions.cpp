@@ -188,6 +188,7 @@ static_assert(StabilityEvent::NONFINITE == static_cast<int>(SimEventKind::kNonFi
               "event kind");
 static_assert(StabilityEvent::GRASPED == static_cast<int>(SimEventKind::kGrasped), "event kind");
 static_assert(StabilityEvent::RELEASED == static_cast<int>(SimEventKind::kReleased), "event kind");
+static_assert(StabilityEvent::LOST == static_cast<int>(SimEventKind::kLost), "event kind");
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

@@ -16,10 +16,11 @@ enum class SimEventKind : unsigned char {
   kNonFinite = 6,  ///< Bullet produced NaN, Inf or a runaway speed for this brick; it was restored.
   kGrasped = 7,    ///< Taken into a hand: kinematic, it follows the held target.
   kReleased = 8,   ///< Let go by the hand: simulated again.
+  kLost = 9,       ///< Left the world box (WorldBounds): removed from the world.
 };
 
 /// Lower-case name used in reports: spawned, frozen, woken, impact, fell_off,
-/// removed, nonfinite, grasped, released.
+/// removed, nonfinite, grasped, released, lost.
 const char* toString(SimEventKind kind);
 
 struct SimEvent {

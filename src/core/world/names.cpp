@@ -39,6 +39,8 @@ const char* toString(SimEventKind kind) {
       return "grasped";
     case SimEventKind::kReleased:
       return "released";
+    case SimEventKind::kLost:
+      return "lost";
   }
   return "unknown";
 }
