@@ -1,4 +1,5 @@
-// The simulator node: parameters -> options -> brick types -> SimNode -> spin.
+// The simulator node: parameters -> options -> brick types -> SimNode -> spin
+// with several threads (SimNode says which requests run where).
 #include <memory>
 
 #include <ros/package.h>
@@ -34,6 +35,10 @@ int main(int argc, char** argv) {
     ROS_FATAL("brick_sim cannot start: %s", status.message.c_str());
     return 1;
   }
-  ros::spin();
+  // Declared after the node: stopped before it goes away.
+  ros::AsyncSpinner spinner(ros_adapter::kServiceThreads);
+  spinner.start();
+  ros::waitForShutdown();
+  spinner.stop();
   return 0;
 }

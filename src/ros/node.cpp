@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <sstream>
 
 #include <geometry_msgs/TransformStamped.h>
@@ -23,6 +24,17 @@ namespace {
 /// gives up catching up: longer than any scheduling hiccup, short enough that
 /// a user sees sim time slow down rather than jump.
 constexpr double kMaxLag = 0.1;
+
+/// Wall time [s] a ~step keeps the world before it looks whether a client
+/// waits for it: short against the 100 ms a client may wait, long against
+/// the cost of a hand-over, so the step still makes progress under a flood.
+constexpr double kStepSlice = 0.002;
+
+/// ~bricks (with tf and markers) follows sim time, but never comes more often
+/// than this many times publish_rate x max(1, real_time_factor) per second of
+/// wall time: with real_time_factor 0 or during a ~step sim time runs far
+/// ahead of wall time, and nobody can read thousands of messages a second.
+constexpr double kMaxPublishRateRatio = 2.0;
 
 std::string formatTime(double t) {
   std::ostringstream text;
@@ -68,29 +80,53 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
 
   const std::string& initial_scene = options.config.data.scene;
   if (!initial_scene.empty()) {
-    unsigned scheduled = 0;
+    Scene scene;
     std::string message;
-    if (Status played = self.resetWorld(initial_scene, &scheduled, &message); !played)
+    Status played = self.loadNamedScene(initial_scene, &scene);
+    if (played) {
+      std::lock_guard<TicketMutex> lock(self.world_mutex_);
+      played = self.resetWorld(initial_scene, scene, &message);
+    }
+    if (!played)
       return Status::error("parameter ~scene = '" + initial_scene + "': " + played.message);
     ROS_INFO("%s", message.c_str());
   }
 
+  // The long requests get their own queue and thread.
+  ros::AdvertiseServiceOptions step_options;
+  step_options.init<StepSimulation::Request, StepSimulation::Response>(
+      kStepService, [&self](StepSimulation::Request& request, StepSimulation::Response& response) {
+        return self.step(request, response);
+      });
+  step_options.callback_queue = &self.long_work_queue_;
+  ros::AdvertiseServiceOptions reset_options;
+  reset_options.init<ResetScene::Request, ResetScene::Response>(
+      kResetService, [&self](ResetScene::Request& request, ResetScene::Response& response) {
+        return self.reset(request, response);
+      });
+  reset_options.callback_queue = &self.long_work_queue_;
+  self.long_work_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &self.long_work_queue_);
+  self.long_work_spinner_->start();
+
   self.services_.push_back(nh.advertiseService(kPlaceBrickService, &SimNode::placeBrick, &self));
   self.services_.push_back(nh.advertiseService(kRemoveBrickService, &SimNode::removeBrick, &self));
-  self.services_.push_back(nh.advertiseService(kResetService, &SimNode::reset, &self));
+  self.services_.push_back(nh.advertiseService(reset_options));
   self.services_.push_back(nh.advertiseService(kGetBricksService, &SimNode::getBricks, &self));
   self.services_.push_back(nh.advertiseService(kPushBrickService, &SimNode::pushBrick, &self));
   self.services_.push_back(
       nh.advertiseService(kQueryPlacementService, &SimNode::queryPlacement, &self));
   self.services_.push_back(nh.advertiseService(kPauseService, &SimNode::pause, &self));
-  self.services_.push_back(nh.advertiseService(kStepService, &SimNode::step, &self));
+  self.services_.push_back(nh.advertiseService(step_options));
   self.services_.push_back(nh.advertiseService(kGraspBrickService, &SimNode::graspBrick, &self));
   self.services_.push_back(
       nh.advertiseService(kReleaseBrickService, &SimNode::releaseBrick, &self));
   self.held_target_subscriber_ = nh.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, &self);
 
   self.publishTableFrame();
-  self.restartPacing();
+  {
+    std::lock_guard<TicketMutex> lock(self.world_mutex_);
+    self.restartPacing();
+  }
   self.step_timer_ = nh.createWallTimer(ros::WallDuration(1.0 / options.step_timer_rate),
                                         &SimNode::onStepTimer, &self);
   ROS_INFO(
@@ -107,6 +143,10 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
 SimNode::SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options)
     : options_(options), node_handle_(private_node_handle) {}
 
+SimNode::~SimNode() {
+  if (long_work_spinner_) long_work_spinner_->stop();
+}
+
 double SimNode::simTime() const { return simulation_->time(); }
 
 // --- stepping ------------------------------------------------------------------
@@ -117,6 +157,7 @@ void SimNode::restartPacing() {
 }
 
 void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   if (!paused_) {
     const ros::WallTime start = ros::WallTime::now();
     // Stepping stops after this share of the timer period so that services
@@ -152,12 +193,11 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
       restartPacing();
     }
     if (done > 0) publishClock();
-  } else if (ros::WallTime::now() >= next_paused_publish_) {
+  } else if (ros::WallTime::now() >=
+             last_state_publish_ + ros::WallDuration(1.0 / options_.config.publish.rate)) {
     // Paused, the graph still sees the simulation, as Gazebo's does: a
     // client that joins now gets the clock and the state, at publish_rate
-    // of wall time.
-    next_paused_publish_ =
-        ros::WallTime::now() + ros::WallDuration(1.0 / options_.config.publish.rate);
+    // of wall time (a ~step publishing meanwhile counts).
     publishClock();
     state_dirty_ = true;
   }
@@ -165,17 +205,24 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
   if (state_dirty_) publishState();
 }
 
-void SimNode::stepOnce() {
+void SimNode::advance() {
   simulation_->step();
   logRefusedPlacements(simulation_->takeRefused());
+}
+
+void SimNode::stepOnce() {
+  advance();
   const double now = simTime();
-  if (now + 1e-9 >= next_publish_time_) {
-    publishClock();
-    publishState();
-    const double period = 1.0 / options_.config.publish.rate;
-    next_publish_time_ += period;
-    if (next_publish_time_ <= now) next_publish_time_ = now + period;
-  }
+  if (now + 1e-9 < next_publish_time_) return;
+  const double fastest = kMaxPublishRateRatio * options_.config.publish.rate *
+                         std::max(1.0, options_.config.publish.real_time_factor);
+  // Left due: the next step after the cap publishes it.
+  if (ros::WallTime::now() < last_state_publish_ + ros::WallDuration(1.0 / fastest)) return;
+  publishClock();
+  publishState();
+  const double period = 1.0 / options_.config.publish.rate;
+  next_publish_time_ += period;
+  if (next_publish_time_ <= now) next_publish_time_ = now + period;
 }
 
 // --- publishing ------------------------------------------------------------------
@@ -218,6 +265,7 @@ void SimNode::publishEvents() {
 
 void SimNode::publishState() {
   state_dirty_ = false;
+  last_state_publish_ = ros::WallTime::now();
   const ros::Time now = stamp();
   const std::vector<BrickSnapshot> bricks = simulation_->world().snapshot();
 
@@ -289,6 +337,7 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   BrickPlacement placement;
   if (Status converted = fromMsg(request, &placement); !converted)
     return refuse(kPlaceBrickService, converted, &response);
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   std::string id;
   if (Status added = simulation_->world().addBrick(placement, &id); !added)
     return refuse(kPlaceBrickService, added, &response);
@@ -306,8 +355,11 @@ bool SimNode::queryPlacement(QueryPlacement::Request& request, QueryPlacement::R
   if (Status converted = fromMsg(request.pose, "pose", &placement.pose); !converted)
     return refuse(kQueryPlacementService, converted, &response);
   PlacementReport report;
-  if (Status answered = simulation_->world().evaluatePlacement(placement, &report); !answered)
-    return refuse(kQueryPlacementService, answered, &response);
+  {
+    std::lock_guard<TicketMutex> lock(world_mutex_);
+    if (Status answered = simulation_->world().evaluatePlacement(placement, &report); !answered)
+      return refuse(kQueryPlacementService, answered, &response);
+  }
   response.success = true;
   response.message = report.reason;
   response.stable = report.stable;
@@ -320,6 +372,7 @@ bool SimNode::queryPlacement(QueryPlacement::Request& request, QueryPlacement::R
 }
 
 bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& response) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   if (Status removed = simulation_->world().removeBrick(request.id); !removed)
     return refuse(kRemoveBrickService, removed, &response);
   response.success = true;
@@ -329,17 +382,15 @@ bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& 
   return true;
 }
 
-Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
+Status SimNode::loadNamedScene(const std::string& scene_name, Scene* scene) const {
+  if (scene_name.empty()) return Status::success();
+  // The types of the simulation, not of its current world: they never change.
+  return loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), scene,
+                   options_.config.data.scene_max_bytes);
+}
+
+Status SimNode::resetWorld(const std::string& scene_name, const Scene& scene,
                            std::string* message) {
-  // Everything that can fail happens before the simulation is touched.
-  Scene scene;
-  if (!scene_name.empty()) {
-    if (Status loaded =
-            loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), &scene,
-                      options_.config.data.scene_max_bytes);
-        !loaded)
-      return loaded;
-  }
   if (Status reset = simulation_->reset(scene); !reset)
     return Status::error("scene '" + scene_name + "': " + reset.message);
   publishEvents();  // the removed events, then the new scene's first placements
@@ -349,7 +400,6 @@ Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
   next_publish_time_ = simTime();
   restartPacing();
 
-  *scheduled = static_cast<unsigned>(scene.bricks.size());
   std::ostringstream text;
   if (scene_name.empty()) {
     text << "cleared the table at " << formatTime(simTime());
@@ -363,22 +413,36 @@ Status SimNode::resetWorld(const std::string& scene_name, unsigned* scheduled,
 }
 
 bool SimNode::reset(ResetScene::Request& request, ResetScene::Response& response) {
-  unsigned scheduled = 0;
+  // Reading and checking a big scene takes a while: others are served meanwhile.
+  Scene scene;
+  if (Status loaded = loadNamedScene(request.scene, &scene); !loaded)
+    return refuse(kResetService, loaded, &response);
   std::string message;
-  if (Status done = resetWorld(request.scene, &scheduled, &message); !done)
-    return refuse(kResetService, done, &response);
+  {
+    std::lock_guard<TicketMutex> lock(world_mutex_);
+    if (Status done = resetWorld(request.scene, scene, &message); !done)
+      return refuse(kResetService, done, &response);
+  }
   ROS_INFO("%s", message.c_str());
   response.success = true;
   response.message = message;
-  response.bricks_scheduled = scheduled;
+  response.bricks_scheduled = static_cast<unsigned>(scene.bricks.size());
   return true;
 }
 
 bool SimNode::getBricks(GetBricks::Request& /*request*/, GetBricks::Response& response) {
-  response.header.stamp = stamp();
+  std::vector<BrickSnapshot> bricks;
+  double time = 0.0;
+  {
+    std::lock_guard<TicketMutex> lock(world_mutex_);
+    bricks = simulation_->world().snapshot();
+    time = simTime();
+    response.header.stamp = stamp();
+  }
   response.header.frame_id = options_.config.publish.frame_id;
+  response.bricks.reserve(bricks.size());
   std::size_t left_out = 0;
-  for (const BrickSnapshot& brick : simulation_->world().snapshot()) {
+  for (const BrickSnapshot& brick : bricks) {
     Brick msg;
     if (Status converted = toMsg(brick, &msg); !converted) {
       ROS_WARN_THROTTLE(5.0, "not published: %s", converted.message.c_str());
@@ -388,7 +452,7 @@ bool SimNode::getBricks(GetBricks::Request& /*request*/, GetBricks::Response& re
     response.bricks.push_back(std::move(msg));
   }
   response.success = true;
-  response.message = std::to_string(response.bricks.size()) + " bricks at " + formatTime(simTime());
+  response.message = std::to_string(response.bricks.size()) + " bricks at " + formatTime(time);
   if (left_out > 0) response.message += "; " + std::to_string(left_out) + " left out: not finite";
   return true;
 }
@@ -398,6 +462,7 @@ bool SimNode::pushBrick(PushBrick::Request& request, PushBrick::Response& respon
   Eigen::Vector3d point;
   if (Status converted = fromMsg(request, &impulse, &point); !converted)
     return refuse(kPushBrickService, converted, &response);
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   // An all-zero point is a message whose point nobody filled in: the centre.
   BrickSnapshot brick;
   if (point.isZero() && simulation_->world().find(request.id, &brick))
@@ -412,6 +477,7 @@ bool SimNode::pushBrick(PushBrick::Request& request, PushBrick::Response& respon
 }
 
 bool SimNode::pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   response.success = true;
   if (request.data == paused_) {
     response.message = paused_ ? "already paused" : "already running";
@@ -425,6 +491,7 @@ bool SimNode::pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Resp
 }
 
 bool SimNode::step(StepSimulation::Request& request, StepSimulation::Response& response) {
+  std::unique_lock<TicketMutex> lock(world_mutex_);
   response.sim_time = simTime();
   if (!paused_)
     return refuse(kStepService,
@@ -437,17 +504,58 @@ bool SimNode::step(StepSimulation::Request& request, StepSimulation::Response& r
                   Status::error("steps = " + std::to_string(request.steps) + ": at most " +
                                 std::to_string(kMaxStepsPerRequest) + " per request"),
                   &response);
-  for (unsigned i = 0; i < request.steps; ++i) stepOnce();
+  // Published at publish_rate of wall time, not of sim time: a million steps
+  // would otherwise send tens of thousands of messages in a few seconds.
+  const ros::WallDuration publish_period(1.0 / options_.config.publish.rate);
+  const ros::WallDuration slice(kStepSlice);
+  ros::WallTime next_publish = ros::WallTime::now() + publish_period;
+  ros::WallTime slice_end = ros::WallTime::now() + slice;
+  unsigned done = 0;
+  std::string interrupted;
+  while (done < request.steps) {
+    advance();
+    ++done;
+    const ros::WallTime now = ros::WallTime::now();
+    if (now >= next_publish) {
+      publishClock();
+      publishEvents();
+      publishState();
+      next_publish = now + publish_period;
+    }
+    if (done == request.steps || now < slice_end) continue;
+    if (!ros::ok()) {
+      interrupted = "the node is shutting down";
+      break;
+    }
+    if (world_mutex_.contended()) {
+      // The ticket lock puts this thread behind everyone who asked meanwhile.
+      lock.unlock();
+      lock.lock();
+      if (!paused_) {
+        interrupted = "another client resumed the simulation";
+        break;
+      }
+    }
+    slice_end = ros::WallTime::now() + slice;
+  }
   publishClock();
   publishEvents();
   publishState();
   response.sim_time = simTime();
+  if (!interrupted.empty()) {
+    return refuse(kStepService,
+                  Status::error("stopped after " + std::to_string(done) + " of " +
+                                std::to_string(request.steps) + " steps at " +
+                                formatTime(simTime()) + ": " + interrupted),
+                  &response);
+  }
   response.success = true;
   response.message = "stepped " + std::to_string(request.steps) + " to " + formatTime(simTime());
   return true;
 }
 
 bool SimNode::graspBrick(GraspBrick::Request& request, GraspBrick::Response& response) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   if (Status grasped = simulation_->world().graspBrick(request.id); !grasped)
     return refuse(kGraspBrickService, grasped, &response);
   response.success = true;
@@ -461,6 +569,7 @@ bool SimNode::releaseBrick(ReleaseBrick::Request& request, ReleaseBrick::Respons
   Eigen::Vector3d linear, angular;
   if (Status converted = fromMsg(request.twist, "twist", &linear, &angular); !converted)
     return refuse(kReleaseBrickService, converted, &response);
+  std::lock_guard<TicketMutex> lock(world_mutex_);
   if (Status released = simulation_->world().releaseBrick(request.id, linear, angular); !released)
     return refuse(kReleaseBrickService, released, &response);
   response.success = true;
@@ -479,7 +588,10 @@ void SimNode::onHeldTarget(const geometry_msgs::PoseStamped::ConstPtr& target) {
   }
   Eigen::Isometry3d pose;
   Status accepted = fromMsg(target->pose, "pose", &pose);
-  if (accepted) accepted = simulation_->world().setHeldTarget(pose);
+  if (accepted) {
+    std::lock_guard<TicketMutex> lock(world_mutex_);
+    accepted = simulation_->world().setHeldTarget(pose);
+  }
   if (!accepted)
     ROS_WARN_THROTTLE(2.0, "~%s ignored: %s", kHeldTargetTopic, accepted.message.c_str());
 }

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 #include <geometry_msgs/PoseStamped.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/static_transform_broadcaster.h>
@@ -21,9 +23,11 @@
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/simulation.h"
 #include "brick_stack_sim/ros/node_options.h"
+#include "brick_stack_sim/ros/ticket_mutex.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -47,17 +51,29 @@ constexpr char kGraspBrickService[] = "grasp_brick";
 constexpr char kReleaseBrickService[] = "release_brick";
 
 /// Most steps one ~step request may ask for: 1e6 steps are 1000 s of sim time
-/// at the default step, and the single-threaded node answers nothing meanwhile.
+/// at the default step (seconds to minutes of wall time; other clients are
+/// served meanwhile).
 constexpr unsigned kMaxStepsPerRequest = 1000000;
+/// Threads serving the short requests, the step timer and ~held_target
+/// (main() spins them): a ~get_bricks is answered while a ~place_brick
+/// waits for the world.
+constexpr int kServiceThreads = 4;
 /// Events queued per subscriber before the oldest is dropped: a reset of a
 /// large scene emits a removed and a spawned event per brick in one burst.
 constexpr int kEventQueueSize = 10000;
 
 /// The ROS face of a Simulation: publishes its state, serves its requests and
 /// steps it on a wall timer so that sim time follows wall time times
-/// `real_time_factor`. Everything runs in the single ros::spin thread, so
-/// service handlers and steps never interleave. Each request is checked and
-/// then handed to one core call, which changes nothing when it refuses.
+/// `real_time_factor`. Each request is checked and then handed to one core
+/// call, which changes nothing when it refuses.
+///
+/// Threads: the short requests and the timer run on the global callback queue,
+/// which main() spins with kServiceThreads threads; ~step and ~reset, which may
+/// take seconds, run on a queue of their own with one thread, so they never
+/// hold up the others. The world and everything the node keeps about it are
+/// guarded by one fair lock (world_mutex_), taken once per request or tick, so
+/// requests and steps never interleave; a long ~step hands the lock over
+/// between steps whenever someone waits for it.
 class SimNode {
  public:
   /// Creates the simulation, advertises every topic and service and, when
@@ -68,18 +84,24 @@ class SimNode {
 
   SimNode(const SimNode&) = delete;
   SimNode& operator=(const SimNode&) = delete;
-
-  /// Sim time [s]; never goes backwards, across resets included.
-  double simTime() const;
-  bool paused() const { return paused_; }
+  /// Stops the long-work thread before the world it uses goes away.
+  ~SimNode();
 
  private:
   SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options);
 
+  // Every member function below but the service handlers, onStepTimer and
+  // onHeldTarget expects world_mutex_ to be held by the caller.
+
+  /// Sim time [s]; never goes backwards, across resets included.
+  double simTime() const;
+
   // --- stepping --------------------------------------------------------------
   void onStepTimer(const ros::WallTimerEvent& event);
-  /// One world step, then the scene's due placements and, when due in sim
-  /// time, the state publication.
+  /// One world step with the scene's due placements.
+  void advance();
+  /// advance(), then the state publication when it is due in sim time and
+  /// the wall-time cap allows it (node.cpp says why there is a cap).
   void stepOnce();
   /// Restarts the wall/sim time pacing from now (after a pause, a reset, or
   /// when the world cannot keep up).
@@ -114,23 +136,30 @@ class SimNode {
   /// finite, or with nothing held is ignored with a (throttled) warning.
   void onHeldTarget(const geometry_msgs::PoseStamped::ConstPtr& target);
 
+  /// Reads the scene `scene_name` (empty: no bricks); touches nothing of the
+  /// world, so it runs without the lock.
+  Status loadNamedScene(const std::string& scene_name, Scene* scene) const;
   /// Empties the table (scene empty) or replaces the bricks by the scene's;
-  /// on failure nothing changes. `scheduled` receives the
-  /// scene's brick count, `message` what was done.
-  Status resetWorld(const std::string& scene_name, unsigned* scheduled, std::string* message);
+  /// on failure nothing changes. `message` receives what was done.
+  Status resetWorld(const std::string& scene_name, const Scene& scene, std::string* message);
   /// Logs a refused request at INFO and fills the response fields.
   template <typename Response>
   bool refuse(const char* service, const Status& status, Response* response);
 
   NodeOptions options_;
+
+  /// Guards simulation_ and every member after it up to the ROS handles.
+  TicketMutex world_mutex_;
   std::unique_ptr<Simulation> simulation_;
 
   bool paused_ = false;
-  bool state_dirty_ = true;         ///< Something changed that ~bricks has not shown yet.
-  double next_publish_time_ = 0.0;  ///< Sim time of the next ~bricks [s].
+  /// Something changed that ~bricks has not shown yet; atomic because a
+  /// markers subscriber connecting sets it without the lock.
+  std::atomic<bool> state_dirty_{true};
+  double next_publish_time_ = 0.0;    ///< Sim time of the next ~bricks [s].
+  ros::WallTime last_state_publish_;  ///< Wall time of the last ~bricks.
   ros::WallTime pacing_wall_start_;
-  ros::WallTime next_paused_publish_;  ///< While paused: the next ~bricks and /clock.
-  double pacing_sim_start_ = 0.0;      ///< [s]
+  double pacing_sim_start_ = 0.0;  ///< [s]
   /// tf refuses a second transform of a frame with the same stamp; while the
   /// clock stands still (paused, sim time stamps) only new frames are sent.
   ros::Time last_tf_stamp_;
@@ -147,6 +176,9 @@ class SimNode {
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;
+  /// ~step and ~reset: served by their own thread.
+  ros::CallbackQueue long_work_queue_;
+  std::unique_ptr<ros::AsyncSpinner> long_work_spinner_;
 };
 
 }  // namespace ros_adapter
