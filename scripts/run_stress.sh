@@ -17,6 +17,7 @@ name, first = sys.argv[1], json.load(open(sys.argv[2]))
 problems = []
 if first["nonfinite"] != 0: problems.append(f"nonfinite {first['nonfinite']}")
 if first["lost"] != 0: problems.append(f"lost {first['lost']}")
+if first["missing"] != 0: problems.append(f"missing {first['missing']}")
 if len(sys.argv) > 3:
     strip = lambda t: re.sub(r'"(wall_time|stage_seconds)": (\{[^}]*\}|[^,]*),', "", t)
     if strip(open(sys.argv[2]).read()) != strip(open(sys.argv[3]).read()):

@@ -275,7 +275,7 @@ Status runBenchCase(const BenchCase& c, const BenchSetting& setting, const Bench
       for (const BrickOutcome& b : run.report.bricks) final_bricks.push_back(b.brick);
       row->penetration_mm =
           1000.0 * deepestPenetration(final_bricks, scene.table.value_or(TableOptions()));
-      row->lost = run.report.lost();
+      row->lost = run.report.lost() + run.report.missing();
       if (divergence && scene.bricks.size() <= 250) {
         std::vector<BrickSnapshot>& truth = context.references[c.label + "/" + setting.mode_label];
         if (truth.empty()) {

@@ -64,7 +64,7 @@ struct BenchRow {
   double threshold_error_pct = -1.0;
   double divergence_mm = -1.0;
   unsigned long long nonfinite = 0;
-  std::size_t lost = 0;     ///< Bricks placed but missing at the end (must be 0).
+  std::size_t lost = 0;     ///< Bricks placed but gone at the end, lost or missing (must be 0).
   std::size_t refused = 0;  ///< Scene placements the world refused.
 };
 

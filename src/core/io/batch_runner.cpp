@@ -78,6 +78,7 @@ std::string toJson(const RunReport& r) {
   json.key("blowups").value(static_cast<unsigned long long>(r.cost.blowups));
   json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
   json.key("lost").value(static_cast<unsigned long long>(r.lost()));
+  json.key("missing").value(static_cast<unsigned long long>(r.missing()));
   json.key("cost").beginObject();
   json.key("bullet_steps").value(static_cast<unsigned long long>(r.cost.bullet_steps));
   json.key("awake_brick_steps").value(static_cast<unsigned long long>(r.cost.awake_brick_steps));

@@ -163,6 +163,10 @@ void BrickWorld::step() {
 
   // 1. Advance Bullet for the awake bricks.
   if (step.advance_bullet) timed(&w.cost.bullet_seconds, [&] { advanceBullet(&w, step); });
+  // Before the model reads contacts: a lost brick is no longer in the world.
+  std::vector<std::pair<std::string, std::string>> left_world;
+  left_world.swap(w.left_world);
+  for (const auto& [id, reason] : left_world) remove(id, SimEventKind::kLost, reason);
   if (step.run_model) {
     w.model_changed = false;
     // 2. Read contacts: only after a Bullet step (a model that runs without
@@ -235,6 +239,10 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
 }
 
 Status BrickWorld::removeBrick(const std::string& id) {
+  return remove(id, SimEventKind::kRemoved, "removed by request");
+}
+
+Status BrickWorld::remove(const std::string& id, SimEventKind kind, const std::string& reason) {
   WorldState& w = *state_;
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id " + quotedId(id));
@@ -264,7 +272,8 @@ Status BrickWorld::removeBrick(const std::string& id) {
   w.contacts.clear();
   w.model_changed = true;
   w.bricks.erase(brick);
-  w.emit(SimEventKind::kRemoved, id, "removed by request", std::move(woken));
+  if (kind == SimEventKind::kLost) ++w.cost.lost;
+  w.emit(kind, id, reason, std::move(woken));
   return Status::success();
 }
 

@@ -26,6 +26,12 @@ void guardMovers(WorldState* w) {
       continue;
     }
     brick->last_good_pose = pose;
+    if (!insideWorld(w->options, pose.translation())) {
+      w->left_world.emplace_back(brick->id, "left the world box at " +
+                                                formatVector(pose.translation()) + " (" +
+                                                describeWorldBox(w->options) + "): removed");
+      continue;
+    }
     if (!brick->fell_off && pose.translation().z() < -w->options.fall_off_depth) {
       brick->fell_off = true;
       w->emit(SimEventKind::kFellOff, brick->id,

@@ -38,6 +38,9 @@ Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose,
                  const Eigen::Vector3d& half_extents, const std::string& prefix) {
   if (!pose.translation().allFinite())
     return Status::error(prefix + "position is not finite: " + formatVector(pose.translation()));
+  if (!insideWorld(w.options, pose.translation()))
+    return Status::error(prefix + "position " + formatVector(pose.translation()) +
+                         " lies outside the world box: " + describeWorldBox(w.options));
   if (!isRotation(pose.linear()))
     return Status::error(prefix +
                          "orientation is not a proper rotation (NaN, Inf or not orthonormal)");

@@ -1,5 +1,7 @@
 #include "brick_stack_sim/core/world/simulation.h"
 
+#include "util/text_format.h"
+
 namespace brick_stack_sim {
 
 Simulation::Simulation(const WorldOptions& options, const BrickTypeLibrary& types)
@@ -21,6 +23,14 @@ Status Simulation::reset(const Scene& scene) {
   // after a reset runs exactly as in a new simulation.
   WorldOptions options = options_;
   if (scene.table) options.table = *scene.table;
+  // A scene is refused whole rather than brick by brick at its times: a
+  // brick outside the world box is a typo in the file, not an event.
+  for (const ScheduledBrick& brick : scene.bricks) {
+    const Eigen::Vector3d& centre = brick.placement.pose.translation();
+    if (!insideWorld(options, centre))
+      return Status::error("brick " + quotedId(brick.placement.id) + " at " + formatVector(centre) +
+                           " lies outside the world box: " + describeWorldBox(options));
+  }
   BrickTypeLibrary types = types_;
   if (Status merged = mergeSceneTypes(scene, &types); !merged) return merged;
   std::unique_ptr<BrickWorld> replacement;

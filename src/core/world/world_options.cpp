@@ -1,5 +1,8 @@
 #include "brick_stack_sim/core/world/world_options.h"
 
+#include <cmath>
+#include <sstream>
+
 #include "brick_stack_sim/core/options/options_reader.h"
 #include "util/validation.h"
 
@@ -34,6 +37,30 @@ Status validate(const HeldOptions& h) {
   return Status::success();
 }
 
+Status validate(const BoundsOptions& b) {
+  // Beyond 10 km double precision still holds a brick, but nothing a table
+  // scene does goes there, and a typo of a few zeros is caught.
+  if (!positive(b.horizontal) || b.horizontal > 1e4)
+    return bad("horizontal", b.horizontal, "must be in (0, 1e4] m");
+  if (!positive(b.height) || b.height > 1e4)
+    return bad("height", b.height, "must be in (0, 1e4] m");
+  return Status::success();
+}
+
+bool insideWorld(const WorldOptions& o, const Eigen::Vector3d& c) {
+  // Written so that NaN is outside.
+  return std::abs(c.x()) <= o.bounds.horizontal && std::abs(c.y()) <= o.bounds.horizontal &&
+         c.z() <= o.bounds.height && c.z() >= -o.table.height - BoundsOptions::kBelowFloor;
+}
+
+std::string describeWorldBox(const WorldOptions& o) {
+  std::ostringstream text;
+  text << "|x|, |y| <= " << o.bounds.horizontal << " m, "
+       << -o.table.height - BoundsOptions::kBelowFloor << " m <= z <= " << o.bounds.height
+       << " m (parameters bounds/horizontal, bounds/height)";
+  return text.str();
+}
+
 Status validate(const WorldOptions& o) {
   // Below 10 us a step resolves nothing Bullet needs; at 0.1 s a brick that
   // has fallen a few centimetres crosses several of its own thicknesses in one
@@ -61,6 +88,11 @@ Status validate(const WorldOptions& o) {
     return bad("max_angular_speed", o.max_angular_speed, "must be > 0 rad/s");
   if (Status held = validate(o.held); !held) return prefixed("held/", held);
   if (Status table = validate(o.table); !table) return prefixed("table/", table);
+  if (Status bounds = validate(o.bounds); !bounds) return prefixed("bounds/", bounds);
+  if (o.bounds.horizontal < 0.5 * o.table.size.maxCoeff())
+    return bad("bounds/horizontal", o.bounds.horizontal,
+               "must reach the table's edges (table/size / 2 = " +
+                   std::to_string(0.5 * o.table.size.maxCoeff()) + " m)");
   if (Status stability = validate(o.stability); !stability)
     return prefixed("stability/", stability);
   return Status::success();
@@ -92,6 +124,13 @@ Status readHeldOptions(OptionsReader& reader, HeldOptions* options) {
   });
 }
 
+Status readBoundsOptions(OptionsReader& reader, BoundsOptions* options) {
+  return readAndValidate(reader, true, options, [&reader](BoundsOptions& bounds) {
+    reader.read("horizontal", &bounds.horizontal);
+    reader.read("height", &bounds.height);
+  });
+}
+
 Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
   return readAndValidate(reader, false, options, [&reader](WorldOptions& world) {
     reader.read("time_step", &world.time_step);
@@ -107,6 +146,7 @@ Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
     reader.read("max_angular_speed", &world.max_angular_speed);
     reader.section("held", &readHeldOptions, &world.held);
     reader.section("table", &readTableOptions, &world.table);
+    reader.section("bounds", &readBoundsOptions, &world.bounds);
     reader.section("stability", &readStabilityOptions, &world.stability);
   });
 }

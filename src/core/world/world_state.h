@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
@@ -57,6 +58,9 @@ struct WorldState {
   std::vector<BodyHandle> placed_at_rest;
   unsigned next_serial = 0;
   CostCounters cost;
+  /// Bricks the guard found outside the world box this step, with why; the
+  /// world removes them (as lost) once the guard is done with its loop.
+  std::vector<std::pair<std::string, std::string>> left_world;
   std::vector<SimEvent> events;
 
   double time() const { return start_time + static_cast<double>(cost.steps) * options.time_step; }

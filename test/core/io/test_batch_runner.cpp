@@ -40,6 +40,8 @@ TEST(BatchRunner, ReportHasTheContractKeys) {
                           "\"wall_time\": ",
                           "\"steps\": 200",
                           "\"nonfinite\": 0",
+                          "\"lost\": 0",
+                          "\"missing\": 0",
                           "\"cost\": {\"bullet_steps\": 200, \"awake_brick_steps\": 200",
                           "\"stage_seconds\": {",
                           "\"bricks\": [",
@@ -95,6 +97,29 @@ TEST(BatchRunner, RefusedPlacementIsReportedNotLost) {
   EXPECT_EQ(report.refused[0].id, "b");
   EXPECT_NE(report.refused[0].reason.find("overlaps brick 'a'"), std::string::npos);
   EXPECT_NE(toJson(report).find("\"refused\": [{"), std::string::npos);
+  EXPECT_EQ(report.lost(), 0u);
+  EXPECT_EQ(report.missing(), 0u);
+}
+
+TEST(BatchRunner, ABrickThatLeavesTheWorldIsCountedLostNotMissing) {
+  Scene scene;
+  ASSERT_TRUE(
+      parseScene("bricks:\n"
+                 "  - {id: a, at: 0.0, position: [0, 0, 0.0039]}\n"
+                 "  - {id: up, at: 0.0, position: [0.3, 0, 0.5], linear_velocity: [0, 0, 20]}\n",
+                 "throw", test::packageTypes(), &scene)
+          .ok);
+  RunOptions options;
+  options.world.bounds.height = 2.0;
+  options.duration = 0.3;
+  RunReport report;
+  ASSERT_TRUE(runScene(scene, test::packageTypes(), options, &report).ok);
+  EXPECT_EQ(report.bricks.size(), 1u);
+  EXPECT_EQ(report.lost(), 1u);
+  EXPECT_EQ(report.missing(), 0u);
+  const std::string json = toJson(report);
+  EXPECT_NE(json.find("\"lost\": 1"), std::string::npos);
+  EXPECT_NE(json.find("\"kind\": \"lost\""), std::string::npos);
 }
 
 }  // namespace

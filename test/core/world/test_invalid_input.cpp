@@ -119,6 +119,27 @@ TEST_P(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
   expectRefused(world_->addBrick(upright), "below the table top");
 }
 
+TEST_P(InvalidInput, FiniteButAbsurdPositionsLieOutsideTheWorldBox) {
+  // Issue 11: x = 1e300 missed the floor and fell for ever; z = 1e300 hung
+  // in the air. Both, and anything past the default 10 m box, are refused.
+  for (const Eigen::Vector3d& far :
+       {Eigen::Vector3d(1e300, 0, 0.0039), Eigen::Vector3d(0, -1e300, 0.0039),
+        Eigen::Vector3d(0, 0, 1e300), Eigen::Vector3d(10.01, 0, 0.0039),
+        Eigen::Vector3d(0, 0, 10.01)}) {
+    expectRefused(world_->addBrick(placement("far", far)), "outside the world box");
+    PlacementReport report;
+    expectRefused(world_->evaluatePlacement(placement("far", far), &report),
+                  "outside the world box");
+  }
+  // The box's edge itself is inside.
+  EXPECT_TRUE(world_->checkPlacement(placement("edge", {9.99, 0, 0.5})).ok);
+  ASSERT_TRUE(world_->graspBrick("base").ok);
+  world_->takeEvents();
+  const Status target = world_->setHeldTarget(Eigen::Isometry3d(Eigen::Translation3d(0, 0, 1e300)));
+  EXPECT_FALSE(target.ok);
+  EXPECT_NE(target.message.find("outside the world box"), std::string::npos) << target.message;
+}
+
 TEST_P(InvalidInput, TouchingIsNotOverlapping) {
   // Exactly on top of the base brick, and exactly beside it: both accepted.
   EXPECT_TRUE(world_->checkPlacement(placement("up", {0, 0, 0.0039 + 0.0078})).ok);
@@ -158,6 +179,11 @@ TEST(InvalidOptions, EveryBadSettingIsNamed) {
       {"table/size", [](WorldOptions* o) { o->table.size.y() = 0.0; }},
       {"table/height", [](WorldOptions* o) { o->table.height = kNaN; }},
       {"table/friction", [](WorldOptions* o) { o->table.friction = -0.1; }},
+      {"bounds/horizontal", [](WorldOptions* o) { o->bounds.horizontal = kNaN; }},
+      {"bounds/horizontal", [](WorldOptions* o) { o->bounds.horizontal = 1e5; }},
+      {"bounds/horizontal = 0.5: must reach the table's edges",
+       [](WorldOptions* o) { o->bounds.horizontal = 0.5; }},  // the table is 1.2 m long
+      {"bounds/height", [](WorldOptions* o) { o->bounds.height = 0.0; }},
       {"overlap_tolerance", [](WorldOptions* o) { o->overlap_tolerance = kNaN; }},
       {"stability/mode = 'magic'", [](WorldOptions* o) { o->stability.mode = "magic"; }},
       {"stability/rest_time", [](WorldOptions* o) { o->stability.rest_time = -1.0; }},

@@ -92,6 +92,49 @@ TEST(Simulation, AResetThatCannotBeMadeChangesNothing) {
   EXPECT_TRUE(simulation->takeEvents().empty());
 }
 
+TEST(Simulation, ASceneWithABrickOutsideTheWorldBoxIsRefusedWhole) {
+  auto simulation = makeSimulation();
+  ASSERT_TRUE(simulation->world().addBrick(placement("a", {0, 0, 0.0039})).ok);
+  simulation->takeEvents();
+  const std::string before = test::fingerprint(simulation->world());
+  Scene scene = twoBricksAtTimes();
+  scene.bricks[1].placement.pose.translation() = Eigen::Vector3d(1e300, 0, 0.0039);
+  const Status refused = simulation->reset(scene);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.message.find("brick 'b'"), std::string::npos) << refused.message;
+  EXPECT_NE(refused.message.find("outside the world box"), std::string::npos) << refused.message;
+  EXPECT_TRUE(test::fingerprint(simulation->world()) == before);
+  EXPECT_TRUE(simulation->takeEvents().empty());
+}
+
+TEST(Simulation, ABrickThatLeavesTheWorldBoxIsRemovedAndReportedLost) {
+  // Thrown straight up at 20 m/s it would climb 20 m: past a 2 m box after
+  // about 0.1 s, it is removed with a lost event instead of flying on.
+  WorldOptions options = test::plainBulletOptions();
+  options.bounds.height = 2.0;
+  auto simulation = makeSimulation(options);
+  BrickPlacement thrown = placement("up", {0, 0, 0.5});
+  thrown.linear_velocity = Eigen::Vector3d(0, 0, 20.0);
+  ASSERT_TRUE(simulation->world().addBrick(thrown).ok);
+  ASSERT_TRUE(simulation->world().addBrick(placement("stays", {0.3, 0, 0.0039})).ok);
+  simulation->takeEvents();
+  std::vector<SimEvent> lost;
+  for (int i = 0; i < 300; ++i) {
+    simulation->step();
+    for (const SimEvent& event : simulation->takeEvents())
+      if (event.kind == SimEventKind::kLost) lost.push_back(event);
+  }
+  ASSERT_EQ(lost.size(), 1u);
+  EXPECT_EQ(lost[0].brick_id, "up");
+  EXPECT_NE(lost[0].reason.find("left the world box"), std::string::npos) << lost[0].reason;
+  // z = 0.5 + 20 t - g t^2 / 2 passes 2 m at t = 0.0784 s.
+  EXPECT_NEAR(lost[0].time, 0.0784, 0.002);
+  EXPECT_EQ(simulation->world().brickCount(), 1u);
+  BrickSnapshot gone;
+  EXPECT_FALSE(simulation->world().find("up", &gone));
+  EXPECT_EQ(simulation->world().cost().lost, 1u);
+}
+
 TEST(Simulation, RefusedScenePlacementsAreKeptForTheCaller) {
   auto simulation = makeSimulation();
   Scene scene = twoBricksAtTimes();

@@ -41,8 +41,11 @@ struct RunReport {
   std::vector<RefusedPlacement> refused;
   std::size_t scheduled = 0;  ///< Bricks the scene places within the duration.
 
-  /// Placed bricks missing at the end; anything but 0 is a defect.
-  std::size_t lost() const { return scheduled - refused.size() - bricks.size(); }
+  /// Bricks that left the world box and were removed (each with a lost event).
+  std::size_t lost() const { return cost.lost; }
+  /// Placed bricks neither there at the end nor reported lost; anything but 0
+  /// is a defect.
+  std::size_t missing() const { return scheduled - refused.size() - bricks.size() - cost.lost; }
 
   double maxDisplacement() const;  ///< [m]; 0 with no bricks.
 };

@@ -22,6 +22,7 @@ struct CostCounters {
   std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
   std::uint64_t blowups = 0;            ///< Runaway speeds (diverged solver) caught and repaired.
+  std::uint64_t lost = 0;               ///< Bricks that left the world box and were removed.
   std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
   // Wall time per stage of step() [s], for the benchmark's cost shares.
   double bullet_seconds = 0.0;     ///< Advancing Bullet, with its colliders and the guard.
@@ -130,6 +131,8 @@ class BrickWorld {
 
  private:
   explicit BrickWorld(std::unique_ptr<WorldState> state);
+  /// removeBrick, announced by an event of `kind` (removed or lost).
+  Status remove(const std::string& id, SimEventKind kind, const std::string& reason);
   std::unique_ptr<WorldState> state_;
 };
 

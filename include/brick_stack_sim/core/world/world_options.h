@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 
 #include "brick_stack_sim/core/stability/stability_options.h"
@@ -36,6 +38,18 @@ struct HeldOptions {
   double max_angular_speed = 3.0;  ///< [rad/s]
 };
 
+/// The box a brick's centre must stay in (parameters `bounds/...`), centred
+/// on the table: a placement outside is refused, and a brick that leaves it
+/// is removed and reported lost. Without it a brick placed at x = 1e300
+/// missed the floor and fell for ever, and one at z = 1e300 hung in the air.
+/// The floor of the box lies kBelowFloor under the floor plane, so only a
+/// brick that tunnelled through the floor leaves it downwards.
+struct BoundsOptions {
+  double horizontal = 10.0;  ///< Largest |x| and |y| of a brick's centre [m], in (table, 1e4].
+  double height = 10.0;      ///< Highest centre above the table top [m], in (0, 1e4].
+  static constexpr double kBelowFloor = 1.0;  ///< [m]
+};
+
 /// Everything that shapes the simulation of a world (the parameters of
 /// config/sim.yaml and config/stability.yaml but the node's own). The
 /// defaults are chosen for KAPLA-sized bricks (8 mm thick); the Bullet scene
@@ -64,14 +78,23 @@ struct WorldOptions {
 
   HeldOptions held;
   TableOptions table;
+  BoundsOptions bounds;
   StabilityOptions stability;
 };
+
+/// Whether `centre` [m] lies in the world box of `options` (bounds and table).
+bool insideWorld(const WorldOptions& options, const Eigen::Vector3d& centre);
+/// The world box in words, for messages: "|x|, |y| <= 10 m, -1.75 m <= z <= 10 m
+/// (parameters bounds/horizontal, bounds/height)".
+std::string describeWorldBox(const WorldOptions& options);
 
 /// Each checks every field; the message names the first bad one by its key,
 /// with the module's path for the nested ones ("table/size = 0: ...").
 Status validate(const TableOptions& options);
 Status validate(const SleepingOptions& options);
 Status validate(const HeldOptions& options);
+Status validate(const BoundsOptions& options);
+/// Also checks that the world box holds the table.
 Status validate(const WorldOptions& options);
 
 class OptionsReader;
@@ -81,8 +104,9 @@ class OptionsReader;
 Status readTableOptions(OptionsReader& reader, TableOptions* options);
 Status readSleepingOptions(OptionsReader& reader, SleepingOptions* options);
 Status readHeldOptions(OptionsReader& reader, HeldOptions* options);
+Status readBoundsOptions(OptionsReader& reader, BoundsOptions* options);
 /// The world's keys at the reader's level (time_step, gravity, ...) and its
-/// sections table, sleeping, held and stability. Other keys may share that level
+/// sections table, sleeping, held, bounds and stability. Other keys may share that level
 /// (the node's): the caller, who knows them, calls reader.finish().
 Status readWorldOptions(OptionsReader& reader, WorldOptions* options);
 
