@@ -3,11 +3,59 @@
 #include <fstream>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/tools/package_data.h"
 #include "brick_stack_sim/tools/run_command_line.h"
 
 using namespace brick_stack_sim;
+
+namespace {
+
+/// Whether `path` (empty: standard output) can be written, without leaving a
+/// file behind that was not there.
+Status checkWritable(const std::string& path) {
+  if (path.empty()) return Status::success();
+  // access(), not opening it: reading a FIFO would block.
+  const bool existed = ::access(path.c_str(), F_OK) == 0;
+  const bool writable = static_cast<bool>(std::ofstream(path, std::ios::app));
+  if (!existed && writable) std::remove(path.c_str());
+  if (!writable) return Status::error("cannot write report '" + path + "'");
+  return Status::success();
+}
+
+/// Refuses a scene with bricks that can never be placed, naming the first;
+/// with --skip-bad-bricks takes them out of `scene` into `skipped` instead.
+Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTypeLibrary& types,
+                         const WorldOptions& world, std::vector<RefusedPlacement>* skipped) {
+  std::vector<BadSceneBrick> bad;
+  if (Status checked = findBadSceneBricks(*scene, types, world, &bad); !checked) return checked;
+  if (bad.empty()) return Status::success();
+  if (!cli.skip_bad_bricks) {
+    const ScheduledBrick& first = scene->bricks[bad.front().index];
+    return Status::error(
+        "scene '" + cli.config.data.scene + "': " + std::to_string(bad.size()) +
+        " brick(s) can never be placed, the first (" + std::to_string(bad.front().index + 1) +
+        " of " + std::to_string(scene->bricks.size()) + ", id '" + first.placement.id +
+        "'): " + bad.front().reason + " (--skip-bad-bricks runs the scene without them)");
+  }
+  std::vector<ScheduledBrick> kept;
+  std::size_t next_bad = 0;
+  for (std::size_t i = 0; i < scene->bricks.size(); ++i) {
+    const ScheduledBrick& brick = scene->bricks[i];
+    if (next_bad < bad.size() && bad[next_bad].index == i) {
+      skipped->push_back(RefusedPlacement{brick.at, brick.placement.id, bad[next_bad].reason});
+      ++next_bad;
+    } else {
+      kept.push_back(brick);
+    }
+  }
+  scene->bricks = std::move(kept);
+  return Status::success();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   RunCommandLine cli;
@@ -28,13 +76,20 @@ int main(int argc, char** argv) {
   options.world = cli.config.world;
   options.duration = cli.duration;
   const DataOptions& data = cli.config.data;
-  Status status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
+  // A report that cannot be written is found out before a long run, not after.
+  Status status = checkWritable(cli.report_path);
+  if (status) status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
   if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, data.scene_max_bytes);
+  std::vector<RefusedPlacement> skipped;
+  if (status) status = setAsideBadBricks(cli, &scene, types, options.world, &skipped);
   if (status) status = runScene(scene, types, options, &report);
   if (!status) {
     std::cerr << "stack_sim_run: " << status.message << "\n";
     return 1;
   }
+  // The bricks set aside were scheduled and refused like any other.
+  report.scheduled += skipped.size();
+  report.refused.insert(report.refused.begin(), skipped.begin(), skipped.end());
   const std::string json = toJson(report);
   if (cli.report_path.empty()) {
     std::cout << json;
@@ -49,5 +104,15 @@ int main(int argc, char** argv) {
                report.wall_time, report.sim_time / std::max(report.wall_time, 1e-9),
                report.bricks.size(), report.maxDisplacement() * 1000.0,
                static_cast<unsigned long long>(report.cost.nonfinite), report.refused.size());
+  // Refused during the run (an overlap with a brick placed earlier): the
+  // scene did not run as written.
+  if (!report.refused.empty() && !cli.skip_bad_bricks) {
+    const RefusedPlacement& first = report.refused.front();
+    std::cerr << "stack_sim_run: " << report.refused.size()
+              << " brick(s) of the scene could not be placed, the first " << first.id
+              << " at t=" << first.t << " s: " << first.reason
+              << " (--skip-bad-bricks accepts that)\n";
+    return 1;
+  }
   return 0;
 }

@@ -52,7 +52,11 @@ std::string runUsage(const std::string& data_dir) {
          "  --time-step S       fixed step [s] (default 0.001)\n"
          "  --iterations N      solver iterations per step (default 20)\n"
          "  --no-sleep          turn Bullet's own deactivation off (baselines)\n"
-         "  --report FILE       write the JSON here (default: standard output)\n"
+         "  --report FILE       write the JSON here (default: standard output); checked\n"
+         "                      for writing before the run\n"
+         "  --skip-bad-bricks   run a scene with bricks that cannot be placed (bad pose,\n"
+         "                      outside the world, overlapping...) without them and exit 0;\n"
+         "                      by default such a scene is refused (exit 1)\n"
          "  --types URDF        brick types (default: the package's urdf/bricks.urdf)\n"
          "  --materials YAML    friction and restitution per type (default: config/bricks.yaml)\n"
          "  --scene-dir DIR     where scene names are looked up (repeatable; default scenes/)\n"
@@ -78,6 +82,10 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
     }
     if (flag == "--no-sleep") {
       no_sleep = true;
+      continue;
+    }
+    if (flag == "--skip-bad-bricks") {
+      result.skip_bad_bricks = true;
       continue;
     }
     if (flag.rfind("--", 0) != 0) return Status::error("unexpected argument '" + flag + "'");

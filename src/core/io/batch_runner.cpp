@@ -31,6 +31,22 @@ double RunReport::maxDisplacement() const {
   return largest;
 }
 
+Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
+                          const WorldOptions& world, std::vector<BadSceneBrick>* bad) {
+  bad->clear();
+  WorldOptions options = world;
+  if (scene.table) options.table = *scene.table;
+  BrickTypeLibrary scene_types = types;
+  if (Status merged = mergeSceneTypes(scene, &scene_types); !merged) return merged;
+  std::unique_ptr<BrickWorld> empty;
+  if (Status created = BrickWorld::create(options, scene_types, &empty); !created) return created;
+  for (std::size_t i = 0; i < scene.bricks.size(); ++i) {
+    if (Status alone = empty->checkPlacement(scene.bricks[i].placement); !alone)
+      bad->push_back(BadSceneBrick{i, alone.message});
+  }
+  return Status::success();
+}
+
 Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
                 RunReport* report) {
   const double last_placement = scene.bricks.empty() ? 0.0 : scene.bricks.back().at;

@@ -182,9 +182,11 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
   }
 }
 
-/// Runs the real executable; returns its exit code and fills `output` with stderr.
-int runExecutable(const std::string& args, std::string* output) {
-  const std::string command = std::string(STACK_SIM_RUN_PATH) + " " + args + " 2>&1 >/dev/null";
+/// Runs the real executable, killed after `timeout_seconds` (exit 124);
+/// returns its exit code and fills `output` with stderr.
+int runExecutable(const std::string& args, std::string* output, int timeout_seconds = 300) {
+  const std::string command = "timeout " + std::to_string(timeout_seconds) + " " +
+                              std::string(STACK_SIM_RUN_PATH) + " " + args + " 2>&1 >/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return -1;
   char buffer[512];
@@ -201,6 +203,56 @@ TEST(StackSimRun, RefusesAFileThatIsNotASceneAtOnce) {
   EXPECT_NE(output.find("not a regular file"), std::string::npos) << output;
   EXPECT_EQ(runExecutable("--scene /tmp --duration 1", &output), 1) << output;
   EXPECT_NE(output.find("is a directory"), std::string::npos) << output;
+}
+
+TEST(StackSimRun, ASceneWithABadBrickIsRefusedUnlessAskedToSkipIt) {
+  // Issue 11: such a scene loaded, ran and exited 0 with "refused 1".
+  const std::string outside = writeYaml("run_outside.yaml",
+                                        "bricks:\n"
+                                        "  - {id: a, position: [0, 0, 0.0039]}\n"
+                                        "  - {id: far, position: [1e300, 0, 0.0039]}\n");
+  std::string output;
+  EXPECT_EQ(runExecutable("--scene " + outside + " --duration 0.1", &output), 1) << output;
+  EXPECT_NE(output.find("the first (2 of 2, id 'far')"), std::string::npos) << output;
+  EXPECT_NE(output.find("outside the world box"), std::string::npos) << output;
+  EXPECT_NE(output.find("--skip-bad-bricks"), std::string::npos) << output;
+  EXPECT_EQ(runExecutable("--scene " + outside + " --duration 0.1 --skip-bad-bricks", &output), 0)
+      << output;
+  EXPECT_NE(output.find("refused 1"), std::string::npos) << output;
+
+  // An overlap shows only when the brick is due: the run says so and fails.
+  const std::string overlap = writeYaml("run_overlap.yaml",
+                                        "bricks:\n"
+                                        "  - {id: a, at: 0.0, position: [0, 0, 0.0039]}\n"
+                                        "  - {id: b, at: 0.05, position: [0.01, 0, 0.0039]}\n");
+  EXPECT_EQ(runExecutable("--scene " + overlap + " --duration 0.1", &output), 1) << output;
+  EXPECT_NE(output.find("the first b at t=0.05 s: pose overlaps brick 'a'"), std::string::npos)
+      << output;
+  EXPECT_EQ(runExecutable("--scene " + overlap + " --duration 0.1 --skip-bad-bricks", &output), 0)
+      << output;
+
+  const std::string twice = writeYaml("run_twice.yaml",
+                                      "bricks:\n"
+                                      "  - {id: a, at: 0.0, position: [0, 0, 0.0039]}\n"
+                                      "  - {id: a, at: 1.0, position: [0.2, 0, 0.0039]}\n");
+  EXPECT_EQ(runExecutable("--scene " + twice + " --duration 0.1", &output), 1) << output;
+  EXPECT_NE(output.find("id 'a' appears twice"), std::string::npos) << output;
+}
+
+TEST(StackSimRun, AnUnwritableReportPathFailsBeforeTheRun) {
+  // 1e5 s of a 10-layer tower would take minutes: `timeout` would kill a
+  // runner that checked the path only after the run (exit 124).
+  std::string output;
+  EXPECT_EQ(runExecutable("--scene tower10 --duration 100000 --report /no_such_dir/report.json",
+                          &output, 20),
+            1)
+      << output;
+  EXPECT_NE(output.find("cannot write report '/no_such_dir/report.json'"), std::string::npos)
+      << output;
+  const std::string fresh = ::testing::TempDir() + "/not_left_behind.json";
+  std::remove(fresh.c_str());
+  EXPECT_EQ(runExecutable("--scene no_such_scene --report " + fresh, &output), 1) << output;
+  EXPECT_FALSE(std::ifstream(fresh)) << "a failed run left an empty report behind";
 }
 
 TEST(StackSimRun, WritesTheReportAndFailsClearlyOnBadInput) {

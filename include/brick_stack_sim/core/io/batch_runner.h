@@ -50,6 +50,20 @@ struct RunReport {
   double maxDisplacement() const;  ///< [m]; 0 with no bricks.
 };
 
+/// A brick of a scene that can never be placed.
+struct BadSceneBrick {
+  std::size_t index = 0;  ///< In Scene::bricks.
+  std::string reason;
+};
+
+/// The bricks of `scene` that would be refused whatever else the scene does:
+/// each is checked as if placed alone on the scene's empty table (id, type,
+/// pose, velocity, world box). Overlaps with other bricks depend on the run
+/// and show in RunReport::refused instead. Fails only when the scene's
+/// table or types cannot make a world.
+Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
+                          const WorldOptions& world, std::vector<BadSceneBrick>* bad);
+
 /// Runs `scene` for the requested duration, placing each brick at its time.
 Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
                 RunReport* report);
