@@ -327,7 +327,9 @@ void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused)
 
 template <typename Response>
 bool SimNode::refuse(const char* service, const Status& status, Response* response) {
-  ROS_INFO("~%s refused: %s", service, status.message.c_str());
+  // The caller has the message; the log only shows that refusals happen, so
+  // a client that floods bad requests does not flood the log.
+  ROS_INFO_THROTTLE(1.0, "~%s refused: %s", service, status.message.c_str());
   response->success = false;
   response->message = status.message;
   return true;

@@ -9,6 +9,13 @@
 #include <string>
 #include <vector>
 
+#include <future>
+#include <thread>
+#include <utility>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
@@ -130,6 +137,27 @@ TEST_F(NodeServices, BadPlacementsAreRefusedAndChangeNothing) {
   base();
   srv.request.id = "not valid!";
   expectRefused(call(place_, srv), "invalid id");
+  // Issue 11: finite but absurd, and names the scene's fixed bodies own.
+  for (double far : {1e300, -1e300, 10.5}) {
+    base();
+    srv.request.pose.position.x = far;
+    expectRefused(call(place_, srv), "x = " + std::to_string(far));
+    EXPECT_NE(srv.response.message.find("outside the world box"), std::string::npos)
+        << srv.response.message;
+  }
+  base();
+  srv.request.pose.position.z = 1e300;
+  expectRefused(call(place_, srv), "z = 1e300");
+  for (const char* reserved : {"floor", "Table", "WORLD"}) {
+    base();
+    srv.request.id = reserved;
+    expectRefused(call(place_, srv), std::string("id ") + reserved);
+    EXPECT_NE(srv.response.message.find("is reserved"), std::string::npos) << srv.response.message;
+  }
+  base();
+  srv.request.id = "b" + std::string(10239, 'x');
+  expectRefused(call(place_, srv), "10 kB id");
+  EXPECT_LT(srv.response.message.size(), 300u) << "the refusal echoes the whole id";
 
   const std::vector<Brick> after = bricks();
   ASSERT_EQ(after.size(), 1u);
@@ -274,6 +302,52 @@ TEST_F(NodeServices, ResetWithUnknownSceneChangesNothing) {
   reset.request.scene = "";
   ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
   EXPECT_TRUE(bricks().empty());
+}
+
+TEST_F(NodeServices, HostileScenesAreRefusedAtOnceAndChangeNothing) {
+  // Issue 11: /dev/zero was read until the node was killed for memory, and a
+  // FIFO blocked the whole node until someone wrote to it.
+  ASSERT_TRUE(place("keep", 0.1, 0.1, kHalfHeight).success);
+  const std::string dir = ::testing::TempDir() + "/hostile_scenes_" + std::to_string(getpid());
+  ASSERT_EQ(mkdir(dir.c_str(), 0755), 0);
+  const std::string fifo = dir + "/fifo.yaml";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  const std::string sparse = dir + "/sparse.yaml";  // 1 GB of nothing, no disk used
+  std::FILE* created = std::fopen(sparse.c_str(), "w");
+  ASSERT_NE(created, nullptr);
+  std::fclose(created);
+  ASSERT_EQ(truncate(sparse.c_str(), 1LL << 30), 0);
+  const std::pair<std::string, std::string> cases[] = {
+      {"/dev/zero", "not a regular file"},
+      {fifo, "not a regular file"},
+      {dir, "is a directory"},
+      {sparse, "more than the limit"},
+  };
+  for (const auto& [scene, expected] : cases) {
+    // From a thread: a node that blocks must fail the test, not hang it.
+    ResetScene reset;
+    reset.request.scene = scene;
+    std::promise<bool> answered;
+    std::thread caller([&] { answered.set_value(reset_.call(reset)); });
+    std::future<bool> answer = answered.get_future();
+    const bool in_time = answer.wait_for(std::chrono::seconds(5)) == std::future_status::ready;
+    if (!in_time) {
+      // Unblock a node stuck on the FIFO so that the test can end.
+      std::FILE* writer = std::fopen(fifo.c_str(), "w");
+      if (writer) std::fclose(writer);
+    }
+    caller.join();
+    ASSERT_TRUE(in_time) << "~reset of " << scene << " did not answer within 5 s";
+    ASSERT_TRUE(answer.get());
+    expectRefused(reset.response, "scene " + scene);
+    EXPECT_NE(reset.response.message.find(expected), std::string::npos) << reset.response.message;
+  }
+  const std::vector<Brick> after = bricks();
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].id, "keep");
+  std::remove(fifo.c_str());
+  std::remove(sparse.c_str());
+  rmdir(dir.c_str());
 }
 
 TEST_F(NodeServices, ResetPlaysSceneOnTime) {

@@ -142,7 +142,7 @@ class SimNode {
   /// Empties the table (scene empty) or replaces the bricks by the scene's;
   /// on failure nothing changes. `message` receives what was done.
   Status resetWorld(const std::string& scene_name, const Scene& scene, std::string* message);
-  /// Logs a refused request at INFO and fills the response fields.
+  /// Logs a refused request at INFO (at most once a second) and fills the response fields.
   template <typename Response>
   bool refuse(const char* service, const Status& status, Response* response);
 
