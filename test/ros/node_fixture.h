@@ -4,9 +4,13 @@
 // calls the tests share. Each test file derives its own fixture, which brings
 // the node to its starting state in SetUp.
 
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <future>
+#include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -23,6 +27,28 @@
 
 namespace brick_stack_sim {
 namespace test {
+
+/// Calls `client` from a thread of its own and waits at most `seconds` [s]:
+/// a rospy or roscpp call has no timeout, and a node that never answers must
+/// fail the test instead of hanging it. False when the call failed or did not
+/// come back in time (the thread is then left behind; the test ends anyway).
+template <typename Service>
+bool callWithin(ros::ServiceClient& client, Service& srv, double seconds) {
+  auto answer = std::make_shared<std::promise<bool>>();
+  std::future<bool> done = answer->get_future();
+  auto shared = std::make_shared<Service>(srv);
+  std::thread([client, shared, answer]() mutable {
+    answer->set_value(client.call(*shared));
+  }).detach();
+  if (done.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) {
+    ADD_FAILURE() << client.getService() << " did not answer within " << seconds << " s";
+    return false;
+  }
+  const bool called = done.get();
+  EXPECT_TRUE(called) << "call to " << client.getService() << " failed";
+  srv = *shared;
+  return called;
+}
 
 class NodeFixture : public ::testing::Test {
  protected:

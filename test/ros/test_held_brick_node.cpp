@@ -110,8 +110,11 @@ TEST_F(HeldBrickNode, CarriedSlowlyOntoATowerAndReleasedItEndsFrozenOnIt) {
   const Brick joined = brick("hand");
   EXPECT_EQ(joined.state, Brick::STABLE);
   EXPECT_NEAR(joined.pose.position.z, slot.z, 2e-4);
-  for (const Brick& b : bricks())
-    if (b.id != "hand") EXPECT_EQ(b.state, Brick::STABLE) << b.id;
+  for (const Brick& b : bricks()) {
+    if (b.id != "hand") {
+      EXPECT_EQ(b.state, Brick::STABLE) << b.id;
+    }
+  }
 }
 
 TEST_F(HeldBrickNode, SweptThroughATowerAtHalfAMetreASecondItKnocksBricksOff) {
