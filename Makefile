@@ -3,7 +3,7 @@
 # The scripts are development scripts run from the source tree with bash (not
 # executable): they build a workspace, so they have no place in an install space.
 SHELL := /bin/bash
-.PHONY: deps build test check-install demo demo-gui bench bench-quick stress clean
+.PHONY: deps build test check-install demo demo-gui bench bench-quick stress sanitize clean
 
 deps:
 	@bash scripts/install_deps.sh build
@@ -36,5 +36,10 @@ bench:
 stress: deps
 	@bash scripts/run_stress.sh
 
+# All the tests under ASan+UBSan, then under TSan, each in its own workspace;
+# one variant alone: make sanitize VARIANTS=thread
+sanitize: deps
+	@bash scripts/run_sanitize.sh $(VARIANTS)
+
 clean:
-	rm -rf .catkin_ws
+	rm -rf .catkin_ws .catkin_ws_asan .catkin_ws_tsan

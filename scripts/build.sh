@@ -16,7 +16,7 @@ for link in "${package_view}"/* "${package_view}"/.[!.]*; do
 done
 for entry in "${repo_root}"/* "${repo_root}"/.[!.]*; do
   name="$(basename "${entry}")"
-  case "${name}" in .catkin_ws | .git) continue ;; esac
+  case "${name}" in .catkin_ws | .catkin_ws_* | .git) continue ;; esac
   if [[ -e "${entry}" ]]; then ln -sfn "${entry}" "${package_view}/${name}"; fi
 done
 cd "${workspace}"

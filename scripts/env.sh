@@ -8,4 +8,5 @@ unset PYTHONHOME PYTHONPATH
 # own nodes. Loopback always works for a single machine.
 export ROS_HOSTNAME="${ROS_HOSTNAME:-localhost}"
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-workspace="${repo_root}/.catkin_ws"
+# make sanitize builds in workspaces of its own (.catkin_ws_asan, ...).
+workspace="${BRICK_WORKSPACE:-${repo_root}/.catkin_ws}"
