@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# The long stress runs of issue 4 (the quick ones are gtests in make test):
-# each must end with nonfinite = 0, no brick lost, no crash, and the short
-# ones must give bit-identical reports when run twice.
+# The long stress runs (make test runs short versions of each):
+# - batch runs of issue 4: each must end with nonfinite = 0, no brick lost or
+#   missing, no crash, and the short ones must give bit-identical reports
+#   when run twice;
+# - the node's service fuzzer with three seeds of 10 000 requests, an hour of
+#   sim time of placing and removing (memory measured), and the concurrent
+#   clients with more rounds (issue 11): each must pass its rostest.
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
-bash "${repo_root}/scripts/build.sh"
+bash "${repo_root}/scripts/build.sh" tests
 run="${workspace}/devel/lib/brick_stack_sim/stack_sim_run"
 out="${workspace}/stress"
 mkdir -p "${out}"
@@ -56,5 +60,32 @@ done
 # A million steps of a scene that never sleeps.
 stress busy50_million_steps once --scene "${scenes}/busy50.yaml" --mode none --no-sleep \
   --duration 1000
+
+rostest_run() {  # rostest_run NAME TEST_FILE ARGS...: passes when rostest says SUCCESS
+  local name=$1 file=$2; shift 2
+  local log="${out}/${name}.log"
+  (
+    cd "${workspace}"
+    # shellcheck disable=SC1091
+    source devel/setup.bash
+    # --text: the test's output comes to this log (rostest's exit status does not
+    # tell a failure; its RESULT line does).
+    rostest --text brick_stack_sim "${file}" "$@"
+  ) >"${log}" 2>&1 || true
+  # The test's own lines (its counts and measurements) from rostest's output.
+  grep -h -E '^(fuzz|soak|  [a-z_]+( \(topic\))?:|[0-9]+ clients)' "${log}" || true
+  if grep -q 'RESULT: SUCCESS' "${log}"; then
+    echo "${name}: passed"; passed=$((passed + 1))
+  else
+    echo "${name}: FAILED (${log})"; failed=$((failed + 1))
+  fi
+}
+rostest_run fuzz_seed1_soak_hour service_fuzz.test requests:=10000 seed:=1 \
+  soak_sim_seconds:=3600 time_limit:=3600
+for seed in 2 3; do
+  rostest_run "fuzz_seed${seed}" service_fuzz.test requests:=10000 "seed:=${seed}" \
+    soak_sim_seconds:=60 time_limit:=1800
+done
+rostest_run concurrent_clients_40_rounds concurrent_clients.test rounds:=40
 echo "stress: ${passed} passed, ${failed} failed"
 [[ ${failed} -eq 0 ]]
