@@ -158,8 +158,9 @@ class ServiceFuzz : public test::NodeFixture {
   void SetUp() override {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
-    grasp_ = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick");
-    release_ = nh_.serviceClient<ReleaseBrick>("/brick_sim/release_brick");
+    connectClients(true);
+    grasp_ = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick", true);
+    release_ = nh_.serviceClient<ReleaseBrick>("/brick_sim/release_brick", true);
     held_target_ = nh_.advertise<geometry_msgs::PoseStamped>("/brick_sim/held_target", 10);
     ros::param::param("~seed", seed_, 1);
     ros::param::param("~requests", requests_, 3000);
@@ -426,6 +427,11 @@ TEST_F(ServiceFuzz, EveryAnswerChecksAndTheBricksAreWhatTheAcceptedRequestsBuilt
 }
 
 TEST_F(ServiceFuzz, PlaceAndRemoveSoakKeepsMemoryFlat) {
+#ifdef __SANITIZE_ADDRESS__
+  // The node is built the same way: ASan holds freed memory in quarantine,
+  // so its size says nothing of leaks here; LeakSanitizer checks them.
+  GTEST_SKIP() << "resident memory is not a leak measure under AddressSanitizer";
+#endif
   ASSERT_TRUE(setPaused(true));
   ResetScene clear;
   ASSERT_TRUE(callInTime(reset_, clear) && clear.response.success);
