@@ -56,6 +56,14 @@ class StabilityNode : public test::NodeFixture {
     clearEvents();
   }
 
+  void TearDown() override {
+    // No callback runs after shutdown() returns; taking the lock once more
+    // makes the callbacks' writes visible to this thread (and to TSan).
+    events_sub_.shutdown();
+    std::lock_guard<std::mutex> lock(mutex_);
+    events_.clear();
+  }
+
   // place, step and bricks hide the base's: here a refused placement or step
   // is a failure, and bricks come by id.
 
@@ -102,9 +110,11 @@ class StabilityNode : public test::NodeFixture {
     events_.clear();
   }
 
-  ros::Subscriber events_sub_;
   std::mutex mutex_;
   std::vector<StabilityEvent> events_;
+  // Last: destroyed first, so that no callback runs into the members above
+  // while they are destroyed.
+  ros::Subscriber events_sub_;
 };
 
 TEST_F(StabilityNode, StabilityYamlHoldsTheBuiltInDefaults) {
