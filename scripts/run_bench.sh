@@ -28,3 +28,6 @@ echo "Held brick over 500 frozen bricks into ${results}/held_bench.csv"
 /usr/bin/python3 "${repo_root}/bench/plot_bench.py" "${csv}" "${results}"
 { echo "machine: $(nproc --all) cores (the benchmark pinned to one), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
   echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/bench_${plan}_machine.txt"
+# The node as a ROS client sees it: CPU, publish rates, service latency for
+# settled scenes of 100 to 10 000 bricks (issue 12).
+bash "${repo_root}/scripts/run_node_bench.sh" "${plan}"
