@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
@@ -43,7 +44,10 @@ struct BulletScene::Impl {
   std::unique_ptr<btStaticPlaneShape> floor_shape;
   std::unique_ptr<btRigidBody> table_body;
   std::unique_ptr<btRigidBody> floor_body;
-  std::vector<Body> bodies;  // by handle: serials are dense and never reused
+  // By handle. A map, not a vector indexed by serial: serials are never
+  // reused, and a node that places and removes bricks for hours would keep
+  // an entry for every brick it ever had.
+  std::unordered_map<BodyHandle, Body> bodies;
   std::unique_ptr<btDiscreteDynamicsWorld> world;
 
   explicit Impl(const WorldOptions& world_options);
@@ -57,7 +61,8 @@ struct BulletScene::Impl {
   const btRigidBody* bodyOrTable(BodyHandle handle) const {
     if (handle == kTableHandle) return table_body.get();
     if (isGround(handle)) return nullptr;
-    return body(handle).rigid.get();
+    const auto found = bodies.find(handle);  // a removed brick's: none
+    return found == bodies.end() ? nullptr : found->second.rigid.get();
   }
 };
 
@@ -120,7 +125,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
 }
 
 BulletScene::Impl::~Impl() {
-  for (Body& body : bodies)
+  for (auto& [handle, body] : bodies)
     if (body.in_world) world->removeRigidBody(body.rigid.get());
   world->removeRigidBody(table_body.get());
   world->removeRigidBody(floor_body.get());
@@ -162,14 +167,13 @@ void BulletScene::addBrick(BodyHandle handle, const BrickType& type,
   body->setCcdSweptSphereRadius(0.5 * thinnest_half);
   if (!impl_->options.sleeping.enabled) body->setActivationState(DISABLE_DEACTIVATION);
   body->setUserIndex(static_cast<int>(handle));
-  if (impl_->bodies.size() <= handle) impl_->bodies.resize(handle + 1);
   impl_->bodies[handle].rigid = std::move(body);
   addToWorld(handle);
 }
 
 void BulletScene::removeBrick(BodyHandle handle) {
   removeFromWorld(handle);
-  impl_->body(handle).rigid.reset();
+  impl_->bodies.erase(handle);
 }
 
 void BulletScene::addToWorld(BodyHandle handle) {
@@ -186,7 +190,10 @@ void BulletScene::removeFromWorld(BodyHandle handle) {
   body.in_world = false;
 }
 
-bool BulletScene::inWorld(BodyHandle handle) const { return impl_->body(handle).in_world; }
+bool BulletScene::inWorld(BodyHandle handle) const {
+  const auto found = impl_->bodies.find(handle);  // a removed brick is in no world
+  return found != impl_->bodies.end() && found->second.in_world;
+}
 
 void BulletScene::makeDynamic(BodyHandle handle, const BrickType& type) {
   btRigidBody& body = impl_->rigid(handle);
