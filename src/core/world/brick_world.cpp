@@ -466,6 +466,14 @@ std::vector<BrickSnapshot> BrickWorld::snapshot() const {
   return result;
 }
 
+std::vector<BrickPose> BrickWorld::poses() const {
+  std::vector<BrickPose> result;
+  result.reserve(state_->bricks.size());
+  for (const auto& brick : state_->bricks.all())
+    result.push_back({brick->id, state_->scene.pose(brick->handle)});
+  return result;
+}
+
 bool BrickWorld::find(const std::string& id, BrickSnapshot* brick) const {
   const BrickRecord* found = state_->bricks.find(id);
   if (!found) return false;
