@@ -122,7 +122,10 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
       nh.advertiseService(kReleaseBrickService, &SimNode::releaseBrick, &self));
   self.held_target_subscriber_ = nh.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, &self);
 
-  self.publishTableFrame();
+  self.transforms_ = std::make_unique<BrickTransforms>(nh, options.config.publish.frame_id,
+                                                       options.config.publish.frame_prefix,
+                                                       kStaticTransformsPeriod);
+  self.transforms_->clear(self.stamp());
   {
     std::lock_guard<TicketMutex> lock(self.world_mutex_);
     self.restartPacing();
@@ -202,7 +205,12 @@ void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
     state_dirty_ = true;
   }
   publishEvents();
-  if (state_dirty_) publishState();
+  // Running, the sim-time schedule publishes what changed; paused, changes
+  // go out at most at publish_rate, however many requests made them.
+  if (state_dirty_ && paused_ &&
+      ros::WallTime::now() >=
+          last_state_publish_ + ros::WallDuration(1.0 / options_.config.publish.rate))
+    publishState();
 }
 
 void SimNode::advance() {
@@ -229,15 +237,6 @@ void SimNode::stepOnce() {
 
 ros::Time SimNode::stamp() const {
   return options_.config.publish.clock ? ros::Time(simTime()) : ros::Time::now();
-}
-
-void SimNode::publishTableFrame() {
-  geometry_msgs::TransformStamped table;
-  table.header.stamp = stamp();
-  table.header.frame_id = options_.config.publish.frame_id;
-  table.child_frame_id = options_.config.publish.frame_prefix + "table";
-  table.transform.rotation.w = 1.0;  // the table top's centre is the fixed frame's origin
-  static_tf_broadcaster_.sendTransform(table);
 }
 
 void SimNode::publishClock() {
@@ -267,16 +266,20 @@ void SimNode::publishState() {
   state_dirty_ = false;
   last_state_publish_ = ros::WallTime::now();
   const ros::Time now = stamp();
+  // Poses alone are cheap; tf sends only what moved.
+  int not_finite = 0;
+  transforms_->publish(simulation_->world().poses(), now, &not_finite);
+  if (not_finite > 0) ROS_WARN_THROTTLE(5.0, "%d bricks left off tf: pose not finite", not_finite);
+  // A snapshot asks the stability model about every brick, and markers cost
+  // a support-geometry query each: built only for someone who listens.
+  const bool bricks_wanted = bricks_publisher_.getNumSubscribers() > 0;
+  const bool markers_wanted = markers_publisher_.getNumSubscribers() > 0;
+  if (!bricks_wanted && !markers_wanted) return;
   const std::vector<BrickSnapshot> bricks = simulation_->world().snapshot();
-
   BrickArray array;
   array.header.stamp = now;
   array.header.frame_id = options_.config.publish.frame_id;
   array.bricks.reserve(bricks.size());
-  std::vector<geometry_msgs::TransformStamped> transforms;
-  transforms.reserve(bricks.size());
-  if (now != last_tf_stamp_) tf_sent_at_last_stamp_.clear();
-  last_tf_stamp_ = now;
   std::vector<BrickSnapshot> finite;
   finite.reserve(bricks.size());
   for (const BrickSnapshot& brick : bricks) {
@@ -286,21 +289,10 @@ void SimNode::publishState() {
       continue;
     }
     array.bricks.push_back(std::move(msg));
-    if (tf_sent_at_last_stamp_.insert(brick.id).second) {
-      geometry_msgs::TransformStamped transform;
-      transform.header.stamp = now;
-      transform.header.frame_id = options_.config.publish.frame_id;
-      transform.child_frame_id = options_.config.publish.frame_prefix + brick.id;
-      transform.transform = toTransformMsg(brick.pose);
-      transforms.push_back(transform);
-    }
     finite.push_back(brick);
   }
-  bricks_publisher_.publish(array);
-  if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
-  // Markers cost a message per brick and a support-geometry query each:
-  // built only for someone who looks.
-  if (markers_publisher_.getNumSubscribers() > 0) publishMarkers(finite, now);
+  if (bricks_wanted) bricks_publisher_.publish(array);
+  if (markers_wanted) publishMarkers(finite, now);
 }
 
 void SimNode::publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp) {

@@ -10,8 +10,6 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
-#include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/GraspBrick.h"
@@ -26,6 +24,7 @@
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/ros/brick_transforms.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "brick_stack_sim/ros/ticket_mutex.h"
 
@@ -61,6 +60,9 @@ constexpr int kServiceThreads = 4;
 /// Events queued per subscriber before the oldest is dropped: a reset of a
 /// large scene emits a removed and a spawned event per brick in one burst.
 constexpr int kEventQueueSize = 10000;
+/// Wall time [s] between two sends of the resting bricks on /tf_static: each
+/// is the whole set, and only listeners that join later need it.
+constexpr double kStaticTransformsPeriod = 1.0;
 
 /// The ROS face of a Simulation: publishes its state, serves its requests and
 /// steps it on a wall timer so that sim time follows wall time times
@@ -115,8 +117,6 @@ class SimNode {
   /// rays, contact meshes and forces, the table and the legend.
   void publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp);
   void publishClock();
-  /// `<frame_prefix>table` under the fixed frame, at the table top's centre.
-  void publishTableFrame();
   void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
 
   // --- services: one handler each; they always return true so the caller
@@ -160,19 +160,14 @@ class SimNode {
   ros::WallTime last_state_publish_;  ///< Wall time of the last ~bricks.
   ros::WallTime pacing_wall_start_;
   double pacing_sim_start_ = 0.0;  ///< [s]
-  /// tf refuses a second transform of a frame with the same stamp; while the
-  /// clock stands still (paused, sim time stamps) only new frames are sent.
-  ros::Time last_tf_stamp_;
-  std::set<std::string> tf_sent_at_last_stamp_;
 
   ros::NodeHandle node_handle_;
   ros::Publisher bricks_publisher_;
   ros::Publisher events_publisher_;
   ros::Publisher markers_publisher_;
   ros::Publisher clock_publisher_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
-  /// Latched: `<frame_prefix>table` at the table top's centre.
-  tf2_ros::StaticTransformBroadcaster static_tf_broadcaster_;
+  /// /tf for what moved, latched /tf_static for the table and what rests.
+  std::unique_ptr<BrickTransforms> transforms_;
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;

@@ -1,0 +1,94 @@
+#include "brick_stack_sim/ros/brick_transforms.h"
+
+#include <tf2_msgs/TFMessage.h>
+
+#include "brick_stack_sim/ros/conversions.h"
+
+namespace brick_stack_sim {
+namespace ros_adapter {
+
+BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const std::string& frame_id,
+                                 const std::string& frame_prefix, double static_period)
+    : frame_id_(frame_id), frame_prefix_(frame_prefix), static_period_(static_period) {
+  // Global names, as tf2_ros's broadcasters use, whatever the node's namespace.
+  tf_publisher_ = node_handle.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  static_publisher_ = node_handle.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
+}
+
+void BrickTransforms::publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp,
+                              int* skipped) {
+  tf2_msgs::TFMessage moved;
+  std::map<std::string, Sent> next;
+  for (const BrickPose& brick : bricks) {
+    if (!brick.pose.matrix().allFinite()) {
+      ++*skipped;
+      continue;
+    }
+    auto before = sent_.find(brick.id);
+    if (before != sent_.end() && before->second.pose.matrix() == brick.pose.matrix()) {
+      // Unchanged for a publish: at rest, on /tf_static from now on.
+      Sent& entry = next[brick.id] = before->second;
+      if (!entry.resting) entry.resting = static_due_ = true;
+      continue;
+    }
+    // tf2 warns of a second message for a frame at one stamp (paused on sim
+    // time): such a change waits for the next stamp.
+    if (before != sent_.end() && before->second.stamp == stamp) {
+      next[brick.id] = before->second;
+      continue;
+    }
+    if (before != sent_.end() && before->second.resting) static_due_ = true;
+    geometry_msgs::TransformStamped transform;
+    transform.header.stamp = stamp;
+    transform.header.frame_id = frame_id_;
+    transform.child_frame_id = frame_prefix_ + brick.id;
+    transform.transform = toTransformMsg(brick.pose);
+    moved.transforms.push_back(transform);
+    next[brick.id] = Sent{brick.pose, stamp, false};
+  }
+  // A removed brick that was at rest leaves the static set.
+  for (const auto& [id, entry] : sent_)
+    if (entry.resting && next.count(id) == 0) static_due_ = true;
+  sent_ = std::move(next);
+  if (!moved.transforms.empty() && tf_publisher_.getNumSubscribers() > 0)
+    tf_publisher_.publish(moved);
+  if (static_due_ && ros::WallTime::now() >= last_static_ + static_period_) publishStatic(stamp);
+}
+
+void BrickTransforms::clear(const ros::Time& stamp) {
+  sent_.clear();
+  publishStatic(stamp);
+}
+
+std::size_t BrickTransforms::restingCount() const {
+  std::size_t count = 0;
+  for (const auto& entry : sent_) count += entry.second.resting;
+  return count;
+}
+
+void BrickTransforms::publishStatic(const ros::Time& stamp) {
+  static_due_ = false;
+  last_static_ = ros::WallTime::now();
+  tf2_msgs::TFMessage all;
+  geometry_msgs::TransformStamped table;
+  table.header.stamp = stamp;
+  table.header.frame_id = frame_id_;
+  table.child_frame_id = frame_prefix_ + "table";
+  table.transform.rotation.w = 1.0;  // the table top's centre is the fixed frame's origin
+  all.transforms.push_back(table);
+  for (const auto& [id, entry] : sent_) {
+    if (!entry.resting) continue;
+    geometry_msgs::TransformStamped transform;
+    // Stamped now, not when it came to rest: a listener that holds the frame
+    // as a moving one may then look it up until now.
+    transform.header.stamp = stamp;
+    transform.header.frame_id = frame_id_;
+    transform.child_frame_id = frame_prefix_ + id;
+    transform.transform = toTransformMsg(entry.pose);
+    all.transforms.push_back(transform);
+  }
+  static_publisher_.publish(all);
+}
+
+}  // namespace ros_adapter
+}  // namespace brick_stack_sim
