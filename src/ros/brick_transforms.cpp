@@ -18,37 +18,52 @@ BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const std::string
 void BrickTransforms::publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp,
                               int* skipped) {
   tf2_msgs::TFMessage moved;
-  std::map<std::string, Sent> next;
+  std::vector<Sent> next;
+  next.reserve(bricks.size());
+  // Both lists rise in serial: one walk pairs each brick with what was sent
+  // of it. Serials start again after a reset, so the id must match too.
+  std::size_t old = 0;
   for (const BrickPose& brick : bricks) {
+    while (old < sent_.size() && sent_[old].serial < brick.serial) {
+      static_due_ = static_due_ || sent_[old].resting;  // removed while at rest
+      ++old;
+    }
+    Sent* before = nullptr;
+    if (old < sent_.size() && sent_[old].serial == brick.serial) {
+      if (sent_[old].id == brick.id) {
+        before = &sent_[old];
+      } else {
+        static_due_ = static_due_ || sent_[old].resting;
+      }
+      ++old;
+    }
     if (!brick.pose.matrix().allFinite()) {
       ++*skipped;
+      if (before) static_due_ = static_due_ || before->resting;
       continue;
     }
-    auto before = sent_.find(brick.id);
-    if (before != sent_.end() && before->second.pose.matrix() == brick.pose.matrix()) {
+    if (before && before->pose.matrix() == brick.pose.matrix()) {
       // Unchanged for a publish: at rest, on /tf_static from now on.
-      Sent& entry = next[brick.id] = before->second;
-      if (!entry.resting) entry.resting = static_due_ = true;
+      if (!before->resting) before->resting = static_due_ = true;
+      next.push_back(std::move(*before));
       continue;
     }
     // tf2 warns of a second message for a frame at one stamp (paused on sim
     // time): such a change waits for the next stamp.
-    if (before != sent_.end() && before->second.stamp == stamp) {
-      next[brick.id] = before->second;
+    if (before && before->stamp == stamp) {
+      next.push_back(std::move(*before));
       continue;
     }
-    if (before != sent_.end() && before->second.resting) static_due_ = true;
+    if (before && before->resting) static_due_ = true;
     geometry_msgs::TransformStamped transform;
     transform.header.stamp = stamp;
     transform.header.frame_id = frame_id_;
     transform.child_frame_id = frame_prefix_ + brick.id;
     transform.transform = toTransformMsg(brick.pose);
-    moved.transforms.push_back(transform);
-    next[brick.id] = Sent{brick.pose, stamp, false};
+    moved.transforms.push_back(std::move(transform));
+    next.push_back(Sent{brick.id, brick.serial, brick.pose, stamp, false});
   }
-  // A removed brick that was at rest leaves the static set.
-  for (const auto& [id, entry] : sent_)
-    if (entry.resting && next.count(id) == 0) static_due_ = true;
+  for (; old < sent_.size(); ++old) static_due_ = static_due_ || sent_[old].resting;
   sent_ = std::move(next);
   if (!moved.transforms.empty() && tf_publisher_.getNumSubscribers() > 0)
     tf_publisher_.publish(moved);
@@ -58,12 +73,6 @@ void BrickTransforms::publish(const std::vector<BrickPose>& bricks, const ros::T
 void BrickTransforms::clear(const ros::Time& stamp) {
   sent_.clear();
   publishStatic(stamp);
-}
-
-std::size_t BrickTransforms::restingCount() const {
-  std::size_t count = 0;
-  for (const auto& entry : sent_) count += entry.second.resting;
-  return count;
 }
 
 void BrickTransforms::publishStatic(const ros::Time& stamp) {
@@ -76,14 +85,14 @@ void BrickTransforms::publishStatic(const ros::Time& stamp) {
   table.child_frame_id = frame_prefix_ + "table";
   table.transform.rotation.w = 1.0;  // the table top's centre is the fixed frame's origin
   all.transforms.push_back(table);
-  for (const auto& [id, entry] : sent_) {
+  for (const Sent& entry : sent_) {
     if (!entry.resting) continue;
     geometry_msgs::TransformStamped transform;
     // Stamped now, not when it came to rest: a listener that holds the frame
     // as a moving one may then look it up until now.
     transform.header.stamp = stamp;
     transform.header.frame_id = frame_id_;
-    transform.child_frame_id = frame_prefix_ + id;
+    transform.child_frame_id = frame_prefix_ + entry.id;
     transform.transform = toTransformMsg(entry.pose);
     all.transforms.push_back(transform);
   }

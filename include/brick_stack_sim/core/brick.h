@@ -54,6 +54,7 @@ struct BrickSnapshot {
 /// cost that does not ask the stability model anything.
 struct BrickPose {
   std::string id;
+  unsigned serial = 0;  ///< As BrickSnapshot::serial: rising in placement order.
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< Centre, frame world.
 };
 

@@ -7,7 +7,6 @@
 // `static_period` of wall time: a brick that came to rest was last sent on
 // /tf at its resting pose already, so only late listeners wait for it.
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -27,17 +26,17 @@ class BrickTransforms {
                   const std::string& frame_prefix, double static_period);
 
   /// Sends what moved on /tf, stamped `stamp`, and the static set when due.
-  /// A pose that is not finite is left out (and counted in `skipped`).
+  /// `bricks` in placement order (rising serials), as BrickWorld::poses()
+  /// gives them. A pose that is not finite is left out (counted in `skipped`).
   void publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp, int* skipped);
 
   /// Forgets every brick (a reset): the static set is the table alone again.
   void clear(const ros::Time& stamp);
 
-  /// Bricks currently on /tf_static, for tests and the log.
-  std::size_t restingCount() const;
-
  private:
   struct Sent {
+    std::string id;
+    unsigned serial = 0;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     ros::Time stamp;       ///< Of its last /tf message.
     bool resting = false;  ///< On /tf_static.
@@ -49,7 +48,9 @@ class BrickTransforms {
   ros::WallDuration static_period_;
   ros::Publisher tf_publisher_;
   ros::Publisher static_publisher_;
-  std::map<std::string, Sent> sent_;
+  /// In placement order: each publish walks it beside the world's bricks,
+  /// without a lookup by id.
+  std::vector<Sent> sent_;
   bool static_due_ = true;  ///< The static set changed since it was last sent.
   ros::WallTime last_static_;
 };

@@ -470,7 +470,7 @@ std::vector<BrickPose> BrickWorld::poses() const {
   std::vector<BrickPose> result;
   result.reserve(state_->bricks.size());
   for (const auto& brick : state_->bricks.all())
-    result.push_back({brick->id, state_->scene.pose(brick->handle)});
+    result.push_back({brick->id, brick->handle, state_->scene.pose(brick->handle)});
   return result;
 }
 

@@ -144,6 +144,10 @@ TEST(BrickWorld, PosesAreTheSnapshotsPosesInPlacementOrder) {
   ASSERT_EQ(poses.size(), snapshots.size());
   for (std::size_t i = 0; i < poses.size(); ++i) {
     EXPECT_EQ(poses[i].id, snapshots[i].id);
+    EXPECT_EQ(poses[i].serial, snapshots[i].serial);
+    if (i > 0) {
+      EXPECT_GT(poses[i].serial, poses[i - 1].serial);
+    }
     EXPECT_TRUE(poses[i].pose.matrix() == snapshots[i].pose.matrix()) << poses[i].id;
   }
   EXPECT_EQ(poses[1].id, "falling");
