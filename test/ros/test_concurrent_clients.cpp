@@ -116,15 +116,21 @@ class Client {
     return !hung_;
   }
 
+  /// Odd layers turned 90 degrees: each plank crosses the one below.
+  static geometry_msgs::Pose layerPose(double x, double y, double z, int layer) {
+    geometry_msgs::Pose pose;
+    pose.position.x = x;
+    pose.position.y = y;
+    pose.position.z = z;
+    pose.orientation.z = layer % 2 ? std::sqrt(0.5) : 0.0;
+    pose.orientation.w = layer % 2 ? std::sqrt(0.5) : 1.0;
+    return pose;
+  }
+
   Answer place(const std::string& id, double x, double y, double z, int layer) {
     PlaceBrick srv;
     srv.request.id = id;
-    srv.request.pose.position.x = x;
-    srv.request.pose.position.y = y;
-    srv.request.pose.position.z = z;
-    // Odd layers turned 90 degrees: each plank crosses the one below.
-    srv.request.pose.orientation.z = layer % 2 ? std::sqrt(0.5) : 0.0;
-    srv.request.pose.orientation.w = layer % 2 ? std::sqrt(0.5) : 1.0;
+    srv.request.pose = layerPose(x, y, z, layer);
     Answer answer;
     answer.call = "place " + id;
     if (!call(place_, srv)) return answer;
@@ -136,11 +142,7 @@ class Client {
 
   Answer query(double x, double y, double z, int layer) {
     QueryPlacement srv;
-    srv.request.pose.position.x = x;
-    srv.request.pose.position.y = y;
-    srv.request.pose.position.z = z;
-    srv.request.pose.orientation.z = layer % 2 ? std::sqrt(0.5) : 0.0;
-    srv.request.pose.orientation.w = layer % 2 ? std::sqrt(0.5) : 1.0;
+    srv.request.pose = layerPose(x, y, z, layer);
     Answer answer;
     std::ostringstream what;
     what << "query at (" << x << ", " << y << ", " << z << ")";
