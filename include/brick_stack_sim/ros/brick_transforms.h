@@ -30,7 +30,8 @@ class BrickTransforms {
   /// gives them. A pose that is not finite is left out (counted in `skipped`).
   void publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp, int* skipped);
 
-  /// Forgets every brick (a reset): the static set is the table alone again.
+  /// Forgets every brick and sends the table alone on /tf_static: the
+  /// node's first call, before any brick exists.
   void clear(const ros::Time& stamp);
 
  private:
