@@ -15,9 +15,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
-#include <map>
-#include <memory>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -219,6 +216,15 @@ class NodeBench {
     }
   }
 
+  /// Waits `seconds` [s] of wall time, pushing the loose planks meanwhile.
+  void keepMoving(const Case& scene, double seconds, int* round) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+      if (scene.moving > 0) pushMovers((*round)++);
+      std::this_thread::sleep_for(std::chrono::duration<double>(kPushPeriod));
+    }
+  }
+
   void measureLoad(const Case& scene, int subscribers, Row* row) {
     std::mutex mutex;
     TopicCount bricks, markers, tf;
@@ -231,12 +237,8 @@ class NodeBench {
       subs.push_back(countMessages<tf2_msgs::TFMessage>(nh_, "/tf", &mutex, &tf));
     }
     // Connected and past the first full messages before counting.
-    const auto warm_up_end = std::chrono::steady_clock::now() + std::chrono::seconds(2);
     int round = 0;
-    while (std::chrono::steady_clock::now() < warm_up_end) {
-      if (scene.moving > 0) pushMovers(round++);
-      std::this_thread::sleep_for(std::chrono::duration<double>(kPushPeriod));
-    }
+    keepMoving(scene, 2.0, &round);
     TopicCount bricks0, markers0, tf0;
     {
       std::lock_guard<std::mutex> lock(mutex);
@@ -244,11 +246,7 @@ class NodeBench {
     }
     const double cpu0 = processCpuSeconds(pid_);
     const auto start = std::chrono::steady_clock::now();
-    const auto end = start + std::chrono::duration<double>(window_);
-    while (std::chrono::steady_clock::now() < end) {
-      if (scene.moving > 0) pushMovers(round++);
-      std::this_thread::sleep_for(std::chrono::duration<double>(kPushPeriod));
-    }
+    keepMoving(scene, window_, &round);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     row->node_cpu = (processCpuSeconds(pid_) - cpu0) / wall;

@@ -6,6 +6,20 @@
 
 namespace brick_stack_sim {
 namespace ros_adapter {
+namespace {
+
+geometry_msgs::TransformStamped stamped(const std::string& parent, const std::string& child,
+                                        const geometry_msgs::Transform& transform,
+                                        const ros::Time& stamp) {
+  geometry_msgs::TransformStamped result;
+  result.header.stamp = stamp;
+  result.header.frame_id = parent;
+  result.child_frame_id = child;
+  result.transform = transform;
+  return result;
+}
+
+}  // namespace
 
 BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const std::string& frame_id,
                                  const std::string& frame_prefix, double static_period)
@@ -55,12 +69,8 @@ void BrickTransforms::publish(const std::vector<BrickPose>& bricks, const ros::T
       continue;
     }
     if (before && before->resting) static_due_ = true;
-    geometry_msgs::TransformStamped transform;
-    transform.header.stamp = stamp;
-    transform.header.frame_id = frame_id_;
-    transform.child_frame_id = frame_prefix_ + brick.id;
-    transform.transform = toTransformMsg(brick.pose);
-    moved.transforms.push_back(std::move(transform));
+    moved.transforms.push_back(
+        stamped(frame_id_, frame_prefix_ + brick.id, toTransformMsg(brick.pose), stamp));
     next.push_back(Sent{brick.id, brick.serial, brick.pose, stamp, false});
   }
   for (; old < sent_.size(); ++old) static_due_ = static_due_ || sent_[old].resting;
@@ -79,23 +89,15 @@ void BrickTransforms::publishStatic(const ros::Time& stamp) {
   static_due_ = false;
   last_static_ = ros::WallTime::now();
   tf2_msgs::TFMessage all;
-  geometry_msgs::TransformStamped table;
-  table.header.stamp = stamp;
-  table.header.frame_id = frame_id_;
-  table.child_frame_id = frame_prefix_ + "table";
-  table.transform.rotation.w = 1.0;  // the table top's centre is the fixed frame's origin
-  all.transforms.push_back(table);
-  for (const Sent& entry : sent_) {
-    if (!entry.resting) continue;
-    geometry_msgs::TransformStamped transform;
-    // Stamped now, not when it came to rest: a listener that holds the frame
-    // as a moving one may then look it up until now.
-    transform.header.stamp = stamp;
-    transform.header.frame_id = frame_id_;
-    transform.child_frame_id = frame_prefix_ + entry.id;
-    transform.transform = toTransformMsg(entry.pose);
-    all.transforms.push_back(transform);
-  }
+  // The table top's centre is the fixed frame's origin.
+  all.transforms.push_back(stamped(frame_id_, frame_prefix_ + "table",
+                                   toTransformMsg(Eigen::Isometry3d::Identity()), stamp));
+  // Stamped now, not when they came to rest: a listener that holds such a
+  // frame as a moving one may then look it up until now.
+  for (const Sent& entry : sent_)
+    if (entry.resting)
+      all.transforms.push_back(
+          stamped(frame_id_, frame_prefix_ + entry.id, toTransformMsg(entry.pose), stamp));
   static_publisher_.publish(all);
 }
 
