@@ -198,6 +198,10 @@ class StabilityModel {
 
   /// What the model knows of `brick`; false when it knows nothing.
   virtual bool describe(BodyHandle brick, BrickStability* stability) const = 0;
+  /// Frozen bricks whose describe() may say something else than at the
+  /// last call (any order, maybe repeated): publishers skip the others.
+  /// What it says of a mover may change at any step and is not listed.
+  virtual std::vector<BodyHandle> takeRedescribed() = 0;
 };
 
 }  // namespace brick_stack_sim

@@ -31,6 +31,7 @@ class StackStabilityModel : public StabilityModel {
   PlacementEvaluation evaluatePlacement(const BodyMotion& brick,
                                         const std::vector<PairContact>& contacts) const override;
   bool describe(BodyHandle brick, BrickStability* stability) const override;
+  std::vector<BodyHandle> takeRedescribed() override { return graph_.takeRedescribed(); }
 
  private:
   /// A brick left the stack (`what_happened`: "removed", "grasped"): what

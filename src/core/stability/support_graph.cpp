@@ -174,7 +174,15 @@ std::vector<std::vector<BodyHandle>> SupportGraph::takeChangedComponents() {
   for (BodyHandle handle : dirty_)
     if (!seen.count(handle)) components.push_back(componentOf(handle, &seen));
   dirty_.clear();
+  for (const std::vector<BodyHandle>& component : components)
+    redescribed_.insert(redescribed_.end(), component.begin(), component.end());
   return components;
+}
+
+std::vector<BodyHandle> SupportGraph::takeRedescribed() {
+  std::vector<BodyHandle> taken;
+  taken.swap(redescribed_);
+  return taken;
 }
 
 namespace {

@@ -89,8 +89,14 @@ class SupportGraph {
 
   bool hasChanges() const { return !dirty_.empty(); }
   /// The components holding a brick that changed since the last call, each
-  /// in handle order; forgets the changes.
+  /// in handle order; forgets the changes. Their bricks count as
+  /// redescribed: the criterion judging them writes their nodes.
   std::vector<std::vector<BodyHandle>> takeChangedComponents();
+  /// Bricks whose node may have changed since the last call, in any order
+  /// and maybe more than once: the members of every component handed out
+  /// by takeChangedComponents(). Nodes change only in those components (a
+  /// change makes its component dirty, and loads flow within it).
+  std::vector<BodyHandle> takeRedescribed();
   /// The order in which loads flow down a component: groups of bricks,
   /// each after every group that passes it load. A brick passes load to
   /// its supporters and, when leaning, to what it leans on (`leans_on`).
@@ -111,6 +117,7 @@ class SupportGraph {
 
   std::map<BodyHandle, Node> nodes_;
   std::set<BodyHandle> dirty_;
+  std::vector<BodyHandle> redescribed_;
 };
 
 }  // namespace brick_stack_sim

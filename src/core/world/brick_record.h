@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -43,6 +44,10 @@ struct BrickRecord {
   Eigen::Isometry3d last_good_pose = Eigen::Isometry3d::Identity();
   /// In mode kHeld: where the hand takes it, at a bounded speed.
   Eigen::Isometry3d held_target = Eigen::Isometry3d::Identity();
+  /// WorldState::revision when it last changed mode, or the model last
+  /// described it anew: what tells a frozen brick that changed from one
+  /// that did not (BrickWorld::snapshotChangedSince).
+  std::uint64_t changed_at = 0;
 };
 
 }  // namespace brick_stack_sim

@@ -117,6 +117,12 @@ void runStabilityModel(WorldState* w) {
 // --- the decision path: every call of the model goes through decide() -------
 
 void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
+  // Whatever the model described anew, decisions or not (a brick placed on
+  // the stack changes the load on every frozen brick under it).
+  if (w->model) {
+    for (BodyHandle handle : w->model->takeRedescribed())
+      if (BrickRecord* brick = w->bricks.find(handle)) brick->changed_at = w->revision;
+  }
   if (decisions.empty()) return;
   // Contacts read before bodies changed hands would name bricks that moved
   // in or out of Bullet's world; the next Bullet step reads them afresh.
@@ -126,12 +132,14 @@ void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
     BrickRecord* brick = w->bricks.find(d.brick);
     if (!brick) continue;
     w->sets.transfer(brick, frozenMode(d.kind));
+    brick->changed_at = w->revision;
     w->emit(SimEventKind::kFrozen, brick->id, d.reason);
   }
   for (const WakeDecision& d : decisions.wake) {
     BrickRecord* brick = w->bricks.find(d.brick);
     if (!brick) continue;
     w->sets.transfer(brick, BrickMode::kDynamic);
+    brick->changed_at = w->revision;
     w->emit(SimEventKind::kWoken, brick->id, d.reason);
   }
 }
@@ -153,6 +161,7 @@ void BrickWorld::step() {
   StepContext step;
   for (const BrickRecord* brick : w.sets.movers()) step.awake += w.scene.isActive(brick->handle);
   ++w.cost.steps;
+  ++w.revision;
   w.placed_at_rest.clear();
   // Plain Bullet (mode none) is the baseline and always steps; with a model,
   // a world where nothing is awake has nothing for Bullet to do.
@@ -209,6 +218,7 @@ Status BrickWorld::checkPlacement(const BrickPlacement& placement) const {
 Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assigned_id) {
   if (Status ok = checkPlacement(placement); !ok) return ok;
   WorldState& w = *state_;
+  ++w.revision;
   auto record = std::make_unique<BrickRecord>();
   record->id = placement.id.empty() ? w.bricks.freeId(w.next_serial) : placement.id;
   record->type = *w.types.find(placement.type.empty() ? w.types.defaultType() : placement.type);
@@ -244,6 +254,7 @@ Status BrickWorld::removeBrick(const std::string& id) {
 
 Status BrickWorld::remove(const std::string& id, SimEventKind kind, const std::string& reason) {
   WorldState& w = *state_;
+  ++w.revision;
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id " + quotedId(id));
   StabilityInput input;
@@ -280,6 +291,7 @@ Status BrickWorld::remove(const std::string& id, SimEventKind kind, const std::s
 Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& impulse,
                                 const Eigen::Vector3d& point) {
   WorldState& w = *state_;
+  ++w.revision;
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id " + quotedId(id));
   if (!impulse.allFinite()) return Status::error("impulse is not finite");
@@ -322,6 +334,7 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
 
 Status BrickWorld::graspBrick(const std::string& id) {
   WorldState& w = *state_;
+  ++w.revision;
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id " + quotedId(id));
   if (!w.sets.held().empty())
@@ -352,6 +365,7 @@ Status BrickWorld::graspBrick(const std::string& id) {
 
 Status BrickWorld::setHeldTarget(const Eigen::Isometry3d& target) {
   WorldState& w = *state_;
+  ++w.revision;
   if (w.sets.held().empty()) return Status::error("no brick is held: grasp one first");
   BrickRecord* brick = w.sets.held().front();
   if (Status pose = checkPose(w, target, brick->type.halfExtents(), "target "); !pose) return pose;
@@ -366,6 +380,7 @@ std::string BrickWorld::heldBrick() const {
 Status BrickWorld::releaseBrick(const std::string& id, const Eigen::Vector3d& linear_velocity,
                                 const Eigen::Vector3d& angular_velocity) {
   WorldState& w = *state_;
+  ++w.revision;
   BrickRecord* brick = w.bricks.find(id);
   if (!brick) return Status::error("no brick with id " + quotedId(id));
   if (brick->mode != BrickMode::kHeld)
@@ -464,6 +479,27 @@ std::vector<BrickSnapshot> BrickWorld::snapshot() const {
   result.reserve(state_->bricks.size());
   for (const auto& brick : state_->bricks.all()) result.push_back(snapshotOf(*state_, *brick));
   return result;
+}
+
+std::uint64_t BrickWorld::revision() const { return state_->revision; }
+
+std::vector<BrickSnapshot> BrickWorld::snapshotChangedSince(std::uint64_t revision,
+                                                            std::vector<unsigned>* serials) const {
+  const WorldState& w = *state_;
+  std::vector<BrickSnapshot> changed;
+  if (serials) {
+    serials->clear();
+    serials->reserve(w.bricks.size());
+  }
+  // A mover may have moved in any step; a frozen brick has not, unless it
+  // was frozen, or described anew, since.
+  const bool anything = w.revision > revision;
+  for (const auto& brick : w.bricks.all()) {
+    if (serials) serials->push_back(brick->handle);
+    if (isFrozen(brick->mode) ? brick->changed_at > revision : anything)
+      changed.push_back(snapshotOf(w, *brick));
+  }
+  return changed;
 }
 
 std::vector<BrickPose> BrickWorld::poses() const {

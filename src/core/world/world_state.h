@@ -57,6 +57,9 @@ struct WorldState {
   /// so a brick placed at rest against one is judged with it (a V).
   std::vector<BodyHandle> placed_at_rest;
   unsigned next_serial = 0;
+  /// Grows at every step and every request that may change something
+  /// (BrickWorld::revision).
+  std::uint64_t revision = 0;
   CostCounters cost;
   /// Bricks the guard found outside the world box this step, with why; the
   /// world removes them (as lost) once the guard is done with its loop.

@@ -120,6 +120,20 @@ class BrickWorld {
   /// Every brick's pose alone, in placement order: a fraction of the cost of
   /// snapshot(), whose stability fields ask the model about each brick.
   std::vector<BrickPose> poses() const;
+  /// A count that grows with every step and every request that may change
+  /// a brick: a publisher keeps the value it last saw, and asks
+  /// snapshotChangedSince() for what changed after it.
+  std::uint64_t revision() const;
+  /// The bricks whose snapshot() or supportGeometry() may differ from what
+  /// they were when revision() was `revision`, in placement order: every
+  /// brick that is not frozen (when anything happened since), and the
+  /// frozen bricks that froze or that the model described anew since. A
+  /// frozen brick nothing has touched costs no stability query. `serials`
+  /// (optional) receives every brick's serial in placement order, so that a
+  /// caller can tell which bricks were removed. A world that replaces
+  /// another (a reset) counts from 0 again.
+  std::vector<BrickSnapshot> snapshotChangedSince(std::uint64_t revision,
+                                                  std::vector<unsigned>* serials = nullptr) const;
   /// One brick; false when the id is unknown.
   bool find(const std::string& id, BrickSnapshot* brick) const;
   /// The support patches of a brick as the stability model sees them; false
