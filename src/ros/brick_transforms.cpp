@@ -1,5 +1,7 @@
 #include "brick_stack_sim/ros/brick_transforms.h"
 
+#include <algorithm>
+
 #include <tf2_msgs/TFMessage.h>
 
 #include "brick_stack_sim/ros/conversions.h"
@@ -29,63 +31,68 @@ BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const std::string
   static_publisher_ = node_handle.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
 }
 
-void BrickTransforms::publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp,
-                              int* skipped) {
-  tf2_msgs::TFMessage moved;
-  std::vector<Sent> next;
-  next.reserve(bricks.size());
-  // Both lists rise in serial: one walk pairs each brick with what was sent
-  // of it. Serials start again after a reset, so the id must match too.
-  std::size_t old = 0;
-  for (const BrickPose& brick : bricks) {
-    while (old < sent_.size() && sent_[old].serial < brick.serial) {
-      static_due_ = static_due_ || sent_[old].resting;  // removed while at rest
-      ++old;
-    }
-    Sent* before = nullptr;
-    if (old < sent_.size() && sent_[old].serial == brick.serial) {
-      if (sent_[old].id == brick.id) {
-        before = &sent_[old];
-      } else {
-        static_due_ = static_due_ || sent_[old].resting;
-      }
-      ++old;
-    }
-    if (!brick.pose.matrix().allFinite()) {
-      ++*skipped;
-      if (before) static_due_ = static_due_ || before->resting;
-      continue;
-    }
-    if (before && before->pose.matrix() == brick.pose.matrix()) {
-      // Unchanged for a publish: at rest, on /tf_static from now on.
-      if (!before->resting) before->resting = static_due_ = true;
-      next.push_back(std::move(*before));
-      continue;
-    }
-    // tf2 warns of a second message for a frame at one stamp (paused on sim
-    // time): such a change waits for the next stamp.
-    if (before && before->stamp == stamp) {
-      next.push_back(std::move(*before));
-      continue;
-    }
-    if (before && before->resting) static_due_ = true;
-    moved.transforms.push_back(
-        stamped(frame_id_, frame_prefix_ + brick.id, toTransformMsg(brick.pose), stamp));
-    next.push_back(Sent{brick.id, brick.serial, brick.pose, stamp, false});
+void BrickTransforms::publish(const BrickMirror& mirror, const BrickMirror::Changes& changes,
+                              const ros::Time& stamp, int* skipped) {
+  const std::vector<MirroredBrick>& bricks = mirror.bricks();
+  if (changes.replaced) {
+    moving_.clear();
+    static_due_ = true;
   }
-  for (; old < sent_.size(); ++old) static_due_ = static_due_ || sent_[old].resting;
-  sent_ = std::move(next);
+  for (const MirroredBrick& gone : changes.removed) {
+    // Gone while at rest: the static set must lose it.
+    if (moving_.erase(gone.snapshot.serial) == 0) static_due_ = true;
+  }
+  tf2_msgs::TFMessage moved;
+  std::map<unsigned, Moving> still_moving;
+  auto send = [&](const MirroredBrick& brick) {
+    const BrickSnapshot& snapshot = brick.snapshot;
+    const auto before = moving_.find(snapshot.serial);
+    if (before == moving_.end()) {
+      static_due_ = true;  // it leaves the static set (or was never in it)
+    } else if (before->second.stamp == stamp) {
+      Moving& waiting = still_moving[snapshot.serial] = before->second;
+      waiting.pending = true;
+      return;
+    }
+    moved.transforms.push_back(
+        stamped(frame_id_, frame_prefix_ + snapshot.id, toTransformMsg(snapshot.pose), stamp));
+    still_moving[snapshot.serial] = Moving{snapshot.pose, stamp, false};
+  };
+  for (std::size_t index : changes.moved) {
+    const MirroredBrick& brick = bricks[index];
+    if (!brick.snapshot.pose.matrix().allFinite()) {
+      ++*skipped;
+      continue;
+    }
+    send(brick);
+  }
+  // A brick that waited for a new stamp goes now, unless it moved again
+  // (then it was sent above).
+  for (const auto& [serial, entry] : moving_) {
+    if (!entry.pending || still_moving.count(serial)) continue;
+    const auto found = std::lower_bound(
+        bricks.begin(), bricks.end(), serial,
+        [](const MirroredBrick& brick, unsigned s) { return brick.snapshot.serial < s; });
+    if (found != bricks.end() && found->snapshot.serial == serial &&
+        found->snapshot.pose.matrix().allFinite())
+      send(*found);
+  }
+  // What was on /tf and did not move for a publish is at rest.
+  for (const auto& [serial, entry] : moving_)
+    if (!still_moving.count(serial)) static_due_ = true;
+  moving_ = std::move(still_moving);
   if (!moved.transforms.empty() && tf_publisher_.getNumSubscribers() > 0)
     tf_publisher_.publish(moved);
-  if (static_due_ && ros::WallTime::now() >= last_static_ + static_period_) publishStatic(stamp);
+  if (static_due_ && ros::WallTime::now() >= last_static_ + static_period_)
+    publishStatic(mirror, stamp);
 }
 
 void BrickTransforms::clear(const ros::Time& stamp) {
-  sent_.clear();
-  publishStatic(stamp);
+  moving_.clear();
+  publishStatic(BrickMirror(), stamp);
 }
 
-void BrickTransforms::publishStatic(const ros::Time& stamp) {
+void BrickTransforms::publishStatic(const BrickMirror& mirror, const ros::Time& stamp) {
   static_due_ = false;
   last_static_ = ros::WallTime::now();
   tf2_msgs::TFMessage all;
@@ -94,10 +101,10 @@ void BrickTransforms::publishStatic(const ros::Time& stamp) {
                                    toTransformMsg(Eigen::Isometry3d::Identity()), stamp));
   // Stamped now, not when they came to rest: a listener that holds such a
   // frame as a moving one may then look it up until now.
-  for (const Sent& entry : sent_)
-    if (entry.resting)
-      all.transforms.push_back(
-          stamped(frame_id_, frame_prefix_ + entry.id, toTransformMsg(entry.pose), stamp));
+  for (const MirroredBrick& brick : mirror.bricks())
+    if (!moving_.count(brick.snapshot.serial) && brick.snapshot.pose.matrix().allFinite())
+      all.transforms.push_back(stamped(frame_id_, frame_prefix_ + brick.snapshot.id,
+                                       toTransformMsg(brick.snapshot.pose), stamp));
   static_publisher_.publish(all);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/ros/conversions.h"
@@ -320,6 +321,50 @@ std_msgs::ColorRGBA comAboveColor(double margin) {
   return margin > 0.0 ? rgb(0.20f, 1.00f, 0.20f) : rgb(1.00f, 0.10f, 0.10f);
 }
 
+int edgeMarkerId(const BrickSnapshot& brick) {
+  return static_cast<int>(brick.serial / kBricksPerEdgeMarker);
+}
+
+visualization_msgs::Marker makeEdgeMarker(int id, const std::string& frame_id,
+                                          const ros::Time& stamp) {
+  using visualization_msgs::Marker;
+  Marker edges = newMarker(frame_id, stamp, kBrickEdgeMarkerNamespace, id, Marker::LINE_LIST);
+  edges.scale.x = kBrickEdgeWidth;         // LINE_LIST: only x, the line width
+  edges.color = rgb(0.16f, 0.10f, 0.05f);  // dark walnut: a seam, not a colour of its own
+  return edges;
+}
+
+namespace {
+
+bool drawable(const BrickSnapshot& brick) {
+  return brick.pose.matrix().allFinite() && brick.size.allFinite();
+}
+
+}  // namespace
+
+void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* lines) {
+  if (!drawable(brick)) return;
+  const std::array<Eigen::Vector3d, 8> corner = corners(
+      OrientedBox{brick.pose, 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation)});
+  // Corner i's bits say which side of each axis it lies on (corners()), so
+  // the corners i and i + bit differ along one axis: every edge once.
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) appendSegment(corner[i], corner[i | bit], lines);
+}
+
+void appendBoxMarker(const BrickSnapshot& brick, const std::string& frame_id,
+                     const ros::Time& stamp, visualization_msgs::MarkerArray* array) {
+  using visualization_msgs::Marker;
+  if (!drawable(brick)) return;
+  Marker box =
+      newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
+  box.pose = toPoseMsg(brick.pose);
+  box.scale = toVectorMsg(brick.size);
+  box.color = brickColor(brick);
+  array->markers.push_back(std::move(box));
+}
+
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
                                                  const ros::Time& stamp) {
@@ -332,33 +377,16 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
   clear.ns = kBrickMarkerNamespace;
   clear.action = Marker::DELETEALL;
   array.markers.push_back(clear);
-  // One list for every outline: RViz builds an object per marker, and the
-  // whole array anew after each DELETEALL, so a marker per brick would
-  // double the work for a 2000-brick scene for lines that all look alike.
-  Marker edges =
-      newMarker(frame_id, stamp, kBrickEdgeMarkerNamespace, kBrickEdgesMarkerId, Marker::LINE_LIST);
-  edges.scale.x = kBrickEdgeWidth;         // LINE_LIST: only x, the line width
-  edges.color = rgb(0.16f, 0.10f, 0.05f);  // dark walnut: a seam, not a colour of its own
-  edges.points.reserve(24 * bricks.size());
-
+  std::map<int, Marker> edges;
   for (const BrickSnapshot& brick : bricks) {
-    if (!allFinite(brick.pose) || !brick.size.allFinite()) continue;
-    Marker box =
-        newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
-    box.pose = toPoseMsg(brick.pose);
-    box.scale = toVectorMsg(brick.size);
-    box.color = brickColor(brick);
-    array.markers.push_back(box);
-
-    const std::array<Eigen::Vector3d, 8> corner = corners(
-        OrientedBox{brick.pose, 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation)});
-    // Corner i's bits say which side of each axis it lies on (corners()), so
-    // the corners i and i + bit differ along one axis: every edge once.
-    for (int i = 0; i < 8; ++i)
-      for (int bit : {1, 2, 4})
-        if (!(i & bit)) appendSegment(corner[i], corner[i | bit], &edges.points);
+    if (!drawable(brick)) continue;
+    appendBoxMarker(brick, frame_id, stamp, &array);
+    const int id = edgeMarkerId(brick);
+    auto group = edges.find(id);
+    if (group == edges.end()) group = edges.emplace(id, makeEdgeMarker(id, frame_id, stamp)).first;
+    appendEdges(brick, &group->second.points);
   }
-  if (!edges.points.empty()) array.markers.push_back(std::move(edges));
+  for (auto& [id, marker] : edges) array.markers.push_back(std::move(marker));
   return array;
 }
 
@@ -469,53 +497,58 @@ visualization_msgs::MarkerArray makeLegendMarkers(const TableOptions& table,
   return array;
 }
 
+void appendStabilityMarkers(const BrickSnapshot& brick, const SupportGeometry& geometry,
+                            const std::string& frame_id, const ros::Time& stamp,
+                            visualization_msgs::MarkerArray* array) {
+  using visualization_msgs::Marker;
+  double height = 0.0;
+  if (geometry.com_above.allFinite() && std::isfinite(geometry.margin) &&
+      supportHeight(geometry, &height)) {
+    Marker ray = newMarker(frame_id, stamp, kComAboveMarkerNamespace, brickMarkerId(brick),
+                           Marker::LINE_LIST);
+    const Eigen::Vector3d top = geometry.com_above;
+    const Eigen::Vector3d foot(top.x(), top.y(), height);
+    const double arm = kComAboveFootSize;
+    for (const Eigen::Vector3d& point :
+         {top, foot, Eigen::Vector3d(foot + Eigen::Vector3d(-arm, 0, 0)),
+          Eigen::Vector3d(foot + Eigen::Vector3d(arm, 0, 0)),
+          Eigen::Vector3d(foot + Eigen::Vector3d(0, -arm, 0)),
+          Eigen::Vector3d(foot + Eigen::Vector3d(0, arm, 0))})
+      ray.points.push_back(toPointMsg(point));
+    ray.scale.x = kComAboveLineWidth;  // LINE_LIST: only x, the line width
+    ray.color = comAboveColor(geometry.margin);
+    array->markers.push_back(ray);
+  }
+
+  Marker patches = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, patchMarkerId(brick),
+                             Marker::TRIANGLE_LIST);
+  for (const SupportGeometry::Patch& patch : geometry.patches)
+    appendFan(patch.polygon, kContactMeshLift, &patches.points);
+  // The hull sits just under the patches so that they show through it.
+  Marker hull = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, hullMarkerId(brick),
+                          Marker::TRIANGLE_LIST);
+  appendFan(geometry.combined_hull, 0.5 * kContactMeshLift, &hull.points);
+  patches.scale.x = patches.scale.y = patches.scale.z = 1.0;  // TRIANGLE_LIST: a factor
+  hull.scale = patches.scale;
+  patches.color = patchColor();
+  hull.color = hullColor();
+  // Empty lists are left out (RViz flags a TRIANGLE_LIST without points as
+  // an error); a brick that loses them has them deleted (MarkerUpdates), or
+  // the DELETEALL at the head of a full array removes them.
+  if (!patches.points.empty()) array->markers.push_back(patches);
+  if (!hull.points.empty()) array->markers.push_back(hull);
+  appendContactForces(brick, geometry, frame_id, stamp, array);
+}
+
 visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnapshot>& bricks,
                                                      const SupportGeometryMap& supports,
                                                      const std::string& frame_id,
                                                      const ros::Time& stamp) {
-  using visualization_msgs::Marker;
   visualization_msgs::MarkerArray array;
   for (const BrickSnapshot& brick : bricks) {
     const auto found = supports.find(brick.id);
-    if (found == supports.end()) continue;
-    const SupportGeometry& geometry = found->second;
-
-    double height = 0.0;
-    if (geometry.com_above.allFinite() && std::isfinite(geometry.margin) &&
-        supportHeight(geometry, &height)) {
-      Marker ray = newMarker(frame_id, stamp, kComAboveMarkerNamespace, brickMarkerId(brick),
-                             Marker::LINE_LIST);
-      const Eigen::Vector3d top = geometry.com_above;
-      const Eigen::Vector3d foot(top.x(), top.y(), height);
-      const double arm = kComAboveFootSize;
-      for (const Eigen::Vector3d& point :
-           {top, foot, Eigen::Vector3d(foot + Eigen::Vector3d(-arm, 0, 0)),
-            Eigen::Vector3d(foot + Eigen::Vector3d(arm, 0, 0)),
-            Eigen::Vector3d(foot + Eigen::Vector3d(0, -arm, 0)),
-            Eigen::Vector3d(foot + Eigen::Vector3d(0, arm, 0))})
-        ray.points.push_back(toPointMsg(point));
-      ray.scale.x = kComAboveLineWidth;  // LINE_LIST: only x, the line width
-      ray.color = comAboveColor(geometry.margin);
-      array.markers.push_back(ray);
-    }
-
-    Marker patches = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, patchMarkerId(brick),
-                               Marker::TRIANGLE_LIST);
-    for (const SupportGeometry::Patch& patch : geometry.patches)
-      appendFan(patch.polygon, kContactMeshLift, &patches.points);
-    // The hull sits just under the patches so that they show through it.
-    Marker hull = newMarker(frame_id, stamp, kContactMeshMarkerNamespace, hullMarkerId(brick),
-                            Marker::TRIANGLE_LIST);
-    appendFan(geometry.combined_hull, 0.5 * kContactMeshLift, &hull.points);
-    patches.scale.x = patches.scale.y = patches.scale.z = 1.0;  // TRIANGLE_LIST: a factor
-    hull.scale = patches.scale;
-    patches.color = patchColor();
-    hull.color = hullColor();
-    // Empty lists are left out (RViz flags a TRIANGLE_LIST without points as
-    // an error); the DELETEALL at the head of every array removes old ones.
-    if (!patches.points.empty()) array.markers.push_back(patches);
-    if (!hull.points.empty()) array.markers.push_back(hull);
-    appendContactForces(brick, geometry, frame_id, stamp, &array);
+    if (found != supports.end())
+      appendStabilityMarkers(brick, found->second, frame_id, stamp, &array);
   }
   return array;
 }

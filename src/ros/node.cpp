@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include <geometry_msgs/TransformStamped.h>
@@ -59,13 +60,17 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
 
   SimNode& self = *result;
   ros::NodeHandle& nh = self.node_handle_;
-  self.bricks_publisher_ = nh.advertise<BrickArray>(kBricksTopic, 10);
+  self.marker_updates_ = std::make_unique<MarkerUpdates>(options.config.publish.frame_id);
+  // A new subscriber gets everything at once, alone: with deltas it could
+  // not start otherwise, and a viewer that connects while nothing changes
+  // (paused, or a fully frozen stack) would wait for the next change.
+  self.bricks_publisher_ = nh.advertise<BrickArray>(
+      kBricksTopic, 10,
+      [&self](const ros::SingleSubscriberPublisher& s) { self.onBricksSubscriber(s); });
   self.events_publisher_ = nh.advertise<StabilityEvent>(kEventsTopic, kEventQueueSize);
-  // A viewer that connects while nothing changes (paused, or a fully frozen
-  // stack) would otherwise wait for the next change to see anything.
   self.markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>(
       kMarkersTopic, 2,
-      [&self](const ros::SingleSubscriberPublisher&) { self.state_dirty_ = true; });
+      [&self](const ros::SingleSubscriberPublisher& s) { self.onMarkersSubscriber(s); });
   if (options.config.publish.clock) {
     self.clock_publisher_ = nh.advertise<rosgraph_msgs::Clock>(kClockTopic, 10);
     // Every stamp is then sim time; nodes on wall time would find tf and
@@ -266,46 +271,74 @@ void SimNode::publishState() {
   state_dirty_ = false;
   last_state_publish_ = ros::WallTime::now();
   const ros::Time now = stamp();
-  // Poses alone are cheap; tf sends only what moved.
+  // The world names what may have changed; only that is read, compared and sent.
+  const BrickMirror::Changes changes = mirror_.update(simulation_->world());
   int not_finite = 0;
-  transforms_->publish(simulation_->world().poses(), now, &not_finite);
+  transforms_->publish(mirror_, changes, now, &not_finite);
   if (not_finite > 0) ROS_WARN_THROTTLE(5.0, "%d bricks left off tf: pose not finite", not_finite);
-  // A snapshot asks the stability model about every brick, and markers cost
-  // a support-geometry query each: built only for someone who listens.
-  const bool bricks_wanted = bricks_publisher_.getNumSubscribers() > 0;
-  const bool markers_wanted = markers_publisher_.getNumSubscribers() > 0;
-  if (!bricks_wanted && !markers_wanted) return;
-  const std::vector<BrickSnapshot> bricks = simulation_->world().snapshot();
-  BrickArray array;
-  array.header.stamp = now;
-  array.header.frame_id = options_.config.publish.frame_id;
-  array.bricks.reserve(bricks.size());
-  std::vector<BrickSnapshot> finite;
-  finite.reserve(bricks.size());
-  for (const BrickSnapshot& brick : bricks) {
-    Brick msg;
-    if (Status converted = toMsg(brick, &msg); !converted) {
-      ROS_WARN_THROTTLE(5.0, "not published: %s", converted.message.c_str());
-      continue;
-    }
-    array.bricks.push_back(std::move(msg));
-    finite.push_back(brick);
+  for (std::size_t index : changes.changed) {
+    const MirroredBrick& brick = mirror_.bricks()[index];
+    if (!brick.finite)
+      ROS_WARN_THROTTLE(5.0, "not published: brick %s has a number that is not finite",
+                        brick.snapshot.id.c_str());
   }
-  if (bricks_wanted) bricks_publisher_.publish(array);
-  if (markers_wanted) publishMarkers(finite, now);
+  if (bricks_publisher_.getNumSubscribers() > 0)
+    bricks_publisher_.publish(
+        makeBrickArray(options_.config.publish.bricks_delta ? &changes : nullptr, now));
+  if (markers_publisher_.getNumSubscribers() > 0) {
+    // The world's table, not the parameters': a scene may bring its own.
+    if (changes.replaced || markers_full_due_) {
+      markers_publisher_.publish(
+          marker_updates_->full(mirror_, simulation_->world().options().table, now));
+      markers_full_due_ = false;
+    } else {
+      visualization_msgs::MarkerArray update = marker_updates_->delta(mirror_, changes, now);
+      if (!update.markers.empty()) markers_publisher_.publish(update);
+    }
+  } else {
+    markers_full_due_ = true;  // what viewers show is no longer followed
+  }
 }
 
-void SimNode::publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp) {
-  SupportGeometryMap supports;
-  for (const BrickSnapshot& brick : bricks) {
-    SupportGeometry geometry;
-    // False in mode none and for bricks the model knows nothing of.
-    if (simulation_->world().supportGeometry(brick.id, &geometry))
-      supports.emplace(brick.id, geometry);
+BrickArray SimNode::makeBrickArray(const BrickMirror::Changes* changes,
+                                   const ros::Time& stamp) const {
+  BrickArray array;
+  array.header.stamp = stamp;
+  array.header.frame_id = options_.config.publish.frame_id;
+  const std::vector<MirroredBrick>& bricks = mirror_.bricks();
+  if (!changes) {
+    array.kind = BrickArray::FULL;
+    array.bricks.reserve(bricks.size());
+    for (const MirroredBrick& brick : bricks)
+      if (brick.finite) array.bricks.push_back(brick.msg);
+    return array;
   }
-  // The world's table, not the parameters': a scene may bring its own.
-  markers_publisher_.publish(makeMarkers(bricks, supports, simulation_->world().options().table,
-                                         options_.config.publish.frame_id, stamp));
+  array.kind = BrickArray::DELTA;
+  for (const MirroredBrick& gone : changes->removed) array.removed.push_back(gone.snapshot.id);
+  for (std::size_t index : changes->changed) {
+    const MirroredBrick& brick = bricks[index];
+    // One that stopped being finite leaves the subscriber's view, as it
+    // leaves a full array, until it is again.
+    if (brick.finite) {
+      array.bricks.push_back(brick.msg);
+    } else {
+      array.removed.push_back(brick.snapshot.id);
+    }
+  }
+  return array;
+}
+
+void SimNode::onBricksSubscriber(const ros::SingleSubscriberPublisher& subscriber) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
+  subscriber.publish(makeBrickArray(nullptr, stamp()));
+}
+
+void SimNode::onMarkersSubscriber(const ros::SingleSubscriberPublisher& subscriber) {
+  std::lock_guard<TicketMutex> lock(world_mutex_);
+  // From the mirror, which every other viewer shows: the deltas that follow
+  // apply to this viewer as to them.
+  subscriber.publish(marker_updates_->full(mirror_, simulation_->world().options().table, stamp()));
+  markers_full_due_ = false;
 }
 
 void SimNode::logRefusedPlacements(const std::vector<RefusedPlacement>& refused) {
@@ -387,7 +420,8 @@ Status SimNode::resetWorld(const std::string& scene_name, const Scene& scene,
                            std::string* message) {
   if (Status reset = simulation_->reset(scene); !reset)
     return Status::error("scene '" + scene_name + "': " + reset.message);
-  publishEvents();  // the removed events, then the new scene's first placements
+  publishEvents();   // the removed events, then the new scene's first placements
+  mirror_.forget();  // a new world: its serials and revisions start again
   const std::vector<RefusedPlacement> refused = simulation_->takeRefused();
   logRefusedPlacements(refused);
   state_dirty_ = true;
@@ -424,12 +458,25 @@ bool SimNode::reset(ResetScene::Request& request, ResetScene::Response& response
   return true;
 }
 
-bool SimNode::getBricks(GetBricks::Request& /*request*/, GetBricks::Response& response) {
+bool SimNode::getBricks(GetBricks::Request& request, GetBricks::Response& response) {
+  std::set<std::string> asked;
+  for (const std::string& id : request.ids)
+    if (!asked.insert(id).second)
+      return refuse(kGetBricksService,
+                    Status::error("brick id '" + id + "' asked for twice: ask once"), &response);
   std::vector<BrickSnapshot> bricks;
   double time = 0.0;
   {
     std::lock_guard<TicketMutex> lock(world_mutex_);
-    bricks = simulation_->world().snapshot();
+    if (request.ids.empty()) {
+      bricks = simulation_->world().snapshot();
+    } else {
+      bricks.resize(request.ids.size());
+      for (std::size_t i = 0; i < request.ids.size(); ++i)
+        if (!simulation_->world().find(request.ids[i], &bricks[i]))
+          return refuse(kGetBricksService,
+                        Status::error("no brick with id '" + request.ids[i] + "'"), &response);
+    }
     time = simTime();
     response.header.stamp = stamp();
   }

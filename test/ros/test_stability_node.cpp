@@ -22,6 +22,7 @@
 #include "brick_stack_sim/core/world/world_options.h"
 #include "node_fixture.h"
 #include "support/kapla.h"
+#include "support/marker_viewer.h"
 
 namespace {
 
@@ -211,35 +212,38 @@ TEST_F(StabilityNode, BottomBrickComAboveIsTheCentreOfMassOfEverythingItCarries)
 }
 
 TEST_F(StabilityNode, MarkersShowBricksComRaysAndContactMeshes) {
+  // Applied in order, as RViz does: the first array holds everything, the
+  // later ones what changed.
   std::mutex mutex;
-  std::optional<MarkerArray> last;
+  test::MarkerViewer viewer;
+  std::optional<bool> first_clears;
   ros::Subscriber sub =
       nh_.subscribe<MarkerArray>("/brick_sim/markers", 10, [&](const MarkerArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
-        last = *msg;
+        if (!first_clears)
+          first_clears = !msg->markers.empty() && msg->markers.front().action == Marker::DELETEALL;
+        viewer.apply(*msg);
       });
   ASSERT_TRUE(waitFor([&] { return sub.getNumPublishers() > 0; }, 10.0));
   for (int i = 0; i < 4; ++i) ASSERT_TRUE(placeTowerBrick("m" + std::to_string(i), i / 2, i % 2));
   step(100);
 
-  // The array that shows all four bricks frozen (earlier ones may predate that).
-  auto count = [](const MarkerArray& array, const std::string& ns) {
+  auto count = [&](const std::string& ns) {
     int n = 0;
-    for (const Marker& m : array.markers) n += m.ns == ns && m.action == Marker::ADD;
+    for (const auto& [key, marker] : viewer.shown()) n += key.first == ns;
     return n;
   };
   ASSERT_TRUE(waitFor(
       [&] {
         std::lock_guard<std::mutex> lock(mutex);
-        return last && count(*last, "bricks") == 4 && count(*last, "com_above") == 4 &&
-               count(*last, "contact_mesh") == 8;
+        return count("bricks") == 4 && count("com_above") == 4 && count("contact_mesh") == 8;
       },
       15.0))
-      << "no marker array with 4 bricks, 4 com_above rays and 8 contact meshes";
+      << "the viewer never showed 4 bricks, 4 com_above rays and 8 contact meshes";
   std::lock_guard<std::mutex> lock(mutex);
-  EXPECT_EQ(last->markers.front().action, Marker::DELETEALL);
+  EXPECT_EQ(first_clears, std::optional<bool>(true)) << "the first array does not start afresh";
   std::set<int> ray_ids;
-  for (const Marker& m : last->markers) {
+  for (const auto& [key, m] : viewer.shown()) {
     for (const geometry_msgs::Point& p : m.points)
       EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << m.ns;
     if (m.ns != "com_above") continue;

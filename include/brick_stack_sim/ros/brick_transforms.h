@@ -7,13 +7,13 @@
 // `static_period` of wall time: a brick that came to rest was last sent on
 // /tf at its resting pose already, so only late listeners wait for it.
 
+#include <map>
 #include <string>
-#include <vector>
 
 #include <ros/ros.h>
 #include <Eigen/Geometry>
 
-#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/ros/brick_mirror.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -25,33 +25,36 @@ class BrickTransforms {
   BrickTransforms(ros::NodeHandle& node_handle, const std::string& frame_id,
                   const std::string& frame_prefix, double static_period);
 
-  /// Sends what moved on /tf, stamped `stamp`, and the static set when due.
-  /// `bricks` in placement order (rising serials), as BrickWorld::poses()
-  /// gives them. A pose that is not finite is left out (counted in `skipped`).
-  void publish(const std::vector<BrickPose>& bricks, const ros::Time& stamp, int* skipped);
+  /// Sends the bricks that moved on /tf, stamped `stamp`, and the static
+  /// set (every other finite brick of `mirror`) when due. `changes`: what
+  /// the mirror's last update found. A brick that moved to a pose that is
+  /// not finite is left out (counted in `skipped`).
+  void publish(const BrickMirror& mirror, const BrickMirror::Changes& changes,
+               const ros::Time& stamp, int* skipped);
 
   /// Forgets every brick and sends the table alone on /tf_static: the
   /// node's first call, before any brick exists.
   void clear(const ros::Time& stamp);
 
  private:
-  struct Sent {
-    std::string id;
-    unsigned serial = 0;
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    ros::Time stamp;       ///< Of its last /tf message.
-    bool resting = false;  ///< On /tf_static.
+  /// A brick sent on /tf at the last publish, or waiting to be.
+  struct Moving {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< Last sent on /tf.
+    ros::Time stamp;                                         ///< Of that message.
+    /// It moved again within one stamp (paused on sim time), where tf2
+    /// warns of a second message: sent at the next stamp.
+    bool pending = false;
   };
-  void publishStatic(const ros::Time& stamp);
+  void publishStatic(const BrickMirror& mirror, const ros::Time& stamp);
 
   std::string frame_id_;
   std::string frame_prefix_;
   ros::WallDuration static_period_;
   ros::Publisher tf_publisher_;
   ros::Publisher static_publisher_;
-  /// In placement order: each publish walks it beside the world's bricks,
-  /// without a lookup by id.
-  std::vector<Sent> sent_;
+  /// By serial: the bricks on /tf, which are not in the static set; few
+  /// in a settled scene, so a publish costs what moved.
+  std::map<unsigned, Moving> moving_;
   bool static_due_ = true;  ///< The static set changed since it was last sent.
   ros::WallTime last_static_;
 };

@@ -26,13 +26,18 @@ constexpr char kContactMeshMarkerNamespace[] = "contact_mesh";
 /// Per brick that statics solved for: its contact points, the contact
 /// forces on it as arrows and the friction cones they must stay in.
 constexpr char kLeaningMarkerNamespace[] = "leaning";
-/// The twelve edges of every brick's box, dark, in one marker (id
-/// kBrickEdgesMarkerId). Boxes of one wood that touch would otherwise run
-/// together into one block; and with `bricks` switched off the outlines
-/// stay, so the stack reads as a wire frame around the rays and meshes
-/// inside it.
+/// The twelve edges of every brick's box, dark, kBricksPerEdgeMarker bricks
+/// to a marker (ids edgeMarkerId(), from kBrickEdgesMarkerId). Boxes of one
+/// wood that touch would otherwise run together into one block; and with
+/// `bricks` switched off the outlines stay, so the stack reads as a wire
+/// frame around the rays and meshes inside it.
 constexpr char kBrickEdgeMarkerNamespace[] = "brick_edges";
 constexpr int kBrickEdgesMarkerId = 0;
+/// Bricks whose outlines share one marker, by serial: RViz builds an object
+/// per marker, so one per brick would double its work for lines that all
+/// look alike; one for every brick would be resent whole whenever one brick
+/// moves. Bricks placed together (and so moving together) share one.
+constexpr unsigned kBricksPerEdgeMarker = 64;
 /// The table top (id 0), the floor under it (id 1) and four legs (ids 2-5).
 constexpr char kTableMarkerNamespace[] = "table";
 /// Text facing the viewer over the table: what each colour means.
@@ -136,13 +141,26 @@ std_msgs::ColorRGBA brickColor(const BrickSnapshot& brick);
 /// its whole life and a new brick never inherits an old one's.
 int brickMarkerId(const BrickSnapshot& brick);
 
+/// The outline marker of a brick: its serial / kBricksPerEdgeMarker.
+int edgeMarkerId(const BrickSnapshot& brick);
+/// An empty outline marker (LINE_LIST, dark, kBrickEdgeWidth) with `id`.
+visualization_msgs::Marker makeEdgeMarker(int id, const std::string& frame_id,
+                                          const ros::Time& stamp);
+/// The 24 points of a brick's twelve edges, kBrickEdgeInflation outside its
+/// box; nothing for a brick with a non-finite pose or size.
+void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* lines);
+/// A brick's box: a CUBE (scale = size [m], pose of its centre, opaque,
+/// brickColor(brick)) in kBrickMarkerNamespace, id brickMarkerId(); nothing
+/// for a brick with a non-finite pose or size.
+void appendBoxMarker(const BrickSnapshot& brick, const std::string& frame_id,
+                     const ros::Time& stamp, visualization_msgs::MarkerArray* array);
+
 /// After one DELETEALL marker (so that bricks removed since the last array
 /// disappear, and with them everything else the display shows), per brick in
 /// `frame_id`: a CUBE (scale = size [m], pose of its centre, opaque,
-/// brickColor(brick)) in kBrickMarkerNamespace; then one LINE_LIST of the
-/// twelve edges of every box (kBrickEdgeInflation outside it, dark brown),
-/// 24 points a brick in the order of `bricks`, in kBrickEdgeMarkerNamespace
-/// (none without bricks). Bricks with a non-finite pose or size are left
+/// brickColor(brick)) in kBrickMarkerNamespace; then the outline markers
+/// (appendEdges() of each brick in the order of `bricks`, grouped by
+/// edgeMarkerId(), none without bricks). Bricks with a non-finite pose or size are left
 /// out (RViz would drop the whole array).
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
                                                  const std::string& frame_id,
@@ -227,10 +245,17 @@ visualization_msgs::MarkerArray makeStabilityMarkers(const std::vector<BrickSnap
                                                      const std::string& frame_id,
                                                      const ros::Time& stamp);
 
-/// Everything the node publishes on ~markers: makeBrickMarkers() (DELETEALL
-/// first), makeTableMarkers(), makeLegendMarkers() and
-/// makeStabilityMarkers(). The table and the legend come in every array,
-/// since the DELETEALL at its head removes every marker of the display.
+/// makeStabilityMarkers() for one brick and its geometry.
+void appendStabilityMarkers(const BrickSnapshot& brick, const SupportGeometry& geometry,
+                            const std::string& frame_id, const ros::Time& stamp,
+                            visualization_msgs::MarkerArray* array);
+
+/// Everything a viewer that starts from nothing needs: makeBrickMarkers()
+/// (DELETEALL first), makeTableMarkers(), makeLegendMarkers() and
+/// makeStabilityMarkers(). The table and the legend come in every such
+/// array, since the DELETEALL at its head removes every marker of the
+/// display. (The node sends such an array to a new subscriber and after a
+/// reset, and only what changed in between: MarkerUpdates.)
 visualization_msgs::MarkerArray makeMarkers(const std::vector<BrickSnapshot>& bricks,
                                             const SupportGeometryMap& supports,
                                             const TableOptions& table, const std::string& frame_id,

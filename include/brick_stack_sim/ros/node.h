@@ -10,6 +10,7 @@
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
+#include "brick_stack_sim/BrickArray.h"
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/PlaceBrick.h"
@@ -23,7 +24,9 @@
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/ros/brick_mirror.h"
 #include "brick_stack_sim/ros/brick_transforms.h"
+#include "brick_stack_sim/ros/marker_updates.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "brick_stack_sim/ros/ticket_mutex.h"
 
@@ -111,10 +114,15 @@ class SimNode {
   // --- publishing ------------------------------------------------------------
   ros::Time stamp() const;
   void publishEvents();
+  /// Brings the mirror up to the world and sends what changed: tf always,
+  /// ~bricks and ~markers while subscribed.
   void publishState();
-  /// ~markers for `bricks` (all finite): boxes and their outlines, COM-above
-  /// rays, contact meshes and forces, the table and the legend.
-  void publishMarkers(const std::vector<BrickSnapshot>& bricks, const ros::Time& stamp);
+  /// ~bricks: every brick, or (bricks_delta) what `changes` found.
+  BrickArray makeBrickArray(const BrickMirror::Changes* changes, const ros::Time& stamp) const;
+  /// A new subscriber starts from every brick, or every marker: sent to it
+  /// alone, from the mirror, so that it then follows the others' updates.
+  void onBricksSubscriber(const ros::SingleSubscriberPublisher& subscriber);
+  void onMarkersSubscriber(const ros::SingleSubscriberPublisher& subscriber);
   void publishClock();
   void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
 
@@ -152,9 +160,13 @@ class SimNode {
   std::unique_ptr<Simulation> simulation_;
 
   bool paused_ = false;
-  /// Something changed that ~bricks has not shown yet; atomic because a
-  /// markers subscriber connecting sets it without the lock.
+  /// Something changed that ~bricks has not shown yet.
   std::atomic<bool> state_dirty_{true};
+  /// The world as last published, and what viewers of ~markers show of it.
+  BrickMirror mirror_;
+  std::unique_ptr<MarkerUpdates> marker_updates_;
+  /// The next ~markers is a full array for every viewer (after a reset).
+  bool markers_full_due_ = true;
   double next_publish_time_ = 0.0;    ///< Sim time of the next ~bricks [s].
   ros::WallTime last_state_publish_;  ///< Wall time of the last ~bricks.
   ros::WallTime pacing_wall_start_;

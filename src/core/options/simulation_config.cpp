@@ -16,6 +16,7 @@ Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
     reader.read("real_time_factor", &publish.real_time_factor);
     reader.read("frame_id", &publish.frame_id);
     reader.read("frame_prefix", &publish.frame_prefix);
+    reader.read("bricks_delta", &publish.bricks_delta);
   });
 }
 

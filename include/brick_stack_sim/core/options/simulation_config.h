@@ -35,12 +35,16 @@ struct PublishOptions {
   /// Put before every frame the node names on tf (bricks, the table), so two
   /// simulators, or a robot with a frame called b0, do not clash: "sim1/".
   std::string frame_prefix;
+  /// ~bricks carries, after a subscriber's first message (every brick),
+  /// only the bricks that changed and the ids of those that went
+  /// (BrickArray.msg's DELTA); false: every brick in every message.
+  bool bricks_delta = false;
 };
 
 /// Everything config/sim.yaml and config/stability.yaml hold: the one
 /// options tree of the node (its private parameters) and of the runner
 /// (stack_sim_run --config). Keys: the world's (WorldOptions) and
-/// publish_rate, publish_clock, real_time_factor, frame_id, frame_prefix, types_urdf,
+/// publish_rate, publish_clock, real_time_factor, frame_id, frame_prefix, bricks_delta, types_urdf,
 /// materials_yaml, scene_dirs, scene and scene_max_bytes, all at the top.
 struct SimulationConfig {
   WorldOptions world;
