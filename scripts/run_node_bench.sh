@@ -22,13 +22,28 @@ if command -v taskset >/dev/null && [[ $(nproc) -ge 2 ]]; then
   node_core=(taskset -c 0) client_core=(taskset -c 1)
 fi
 log="${workspace}/node_bench_launch.log"
-"${node_core[@]}" roslaunch --port 11391 brick_stack_sim sim.launch mode:=com >"${log}" 2>&1 &
-launch_pid=$!
-trap 'kill -INT ${launch_pid} 2>/dev/null; wait ${launch_pid} 2>/dev/null || true' EXIT
-args=("${csv}")
-[[ "${plan}" == quick ]] && args+=(--quick --window 3)
+launch_pid=""
+trap 'if [[ -n "${launch_pid}" ]]; then kill -INT ${launch_pid} 2>/dev/null; wait ${launch_pid} 2>/dev/null || true; fi' EXIT
+# One pass: a node started with the launch args `$1`, measured by the bench
+# with the rest of the arguments.
+run_pass() {
+  local launch_args="$1"
+  shift
+  # shellcheck disable=SC2086
+  "${node_core[@]}" roslaunch --port 11391 brick_stack_sim sim.launch mode:=com ${launch_args} >>"${log}" 2>&1 &
+  launch_pid=$!
+  "${client_core[@]}" "${workspace}/devel/lib/brick_stack_sim/stack_sim_node_bench" "$@"
+  kill -INT "${launch_pid}" 2>/dev/null
+  wait "${launch_pid}" 2>/dev/null || true
+  launch_pid=""
+}
+: >"${log}"
+plan_args=()
+[[ "${plan}" == quick ]] && plan_args+=(--quick --window 3)
 echo "Node benchmark (${plan}) into ${csv}"
-"${client_core[@]}" "${workspace}/devel/lib/brick_stack_sim/stack_sim_node_bench" "${args[@]}"
+run_pass "" "${csv}" "${plan_args[@]}"
+# ~bricks as deltas: the same busy scenes, one subscriber.
+run_pass "bricks_delta:=true" "${csv%.csv}_delta.csv" "${plan_args[@]}" --delta
 /usr/bin/python3 "${repo_root}/bench/plot_node_bench.py" "${csv}" "${results}"
 { echo "machine: $(nproc --all) cores (node on one, client on another), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
   echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/node_bench_${plan}_machine.txt"

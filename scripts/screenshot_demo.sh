@@ -73,7 +73,7 @@ call /brick_sim/pause "{data: true}"
 call /brick_sim/reset "{scene: '${scene}'}"
 if ((steps > 0)); then call /brick_sim/step "{steps: ${steps}}"; fi
 
-# Paused, the simulator republishes its markers at publish_rate; software GL
+# RViz got every marker when it subscribed and the changes since; software GL
 # needs a few seconds to draw them.
 sleep "${SCREENSHOT_RENDER_WAIT:-10}"
 import -window root "${output}"

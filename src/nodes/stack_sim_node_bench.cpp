@@ -1,12 +1,14 @@
 // stack_sim_node_bench: what a running brick_sim node costs, from the outside.
 // For settled scenes of 100 to 10 000 bricks, with 0 or 10 bricks kept
-// moving, and with 0, 1 (~bricks) or 3 (~bricks, ~markers, /tf) subscribers,
+// moving, and with 0, 1 (~bricks) or 3 (~bricks, ~markers, /tf) subscribers
+// (with --delta, for a node run with bricks_delta: the scenes with 10 moving
+// bricks and one ~bricks subscriber),
 // it measures the node's CPU (from /proc, as a share of one core), the rates
 // and sizes of what it publishes, and the latency of ~get_bricks,
 // ~query_placement and ~place_brick from this C++ client. One CSV row per
 // case. scripts/run_node_bench.sh starts the node and plots the rows.
 //
-//   stack_sim_node_bench OUTPUT.csv [--quick] [--window SECONDS]
+//   stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]
 #include <unistd.h>
 
 #include <algorithm>
@@ -143,9 +145,10 @@ class NodeBench {
   }
 
   /// Every subscriber count of one scene; false when the scene never settled.
-  bool run(const Case& scene, const std::string& scene_file, std::vector<Row>* rows) {
+  bool run(const Case& scene, const std::string& scene_file, const std::vector<int>& counts,
+           std::vector<Row>* rows) {
     if (!settle(scene, scene_file)) return false;
-    for (int subscribers : {0, 1, 3}) {
+    for (int subscribers : counts) {
       Row row;
       row.scene = scene;
       row.subscribers = subscribers;
@@ -359,14 +362,18 @@ int main(int argc, char** argv) {
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);
   if (args.size() < 2) {
-    std::fprintf(stderr, "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--window SECONDS]\n");
+    std::fprintf(stderr,
+                 "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]\n");
     return 2;
   }
   bool quick = false;
+  bool delta = false;  // the node runs with bricks_delta: the busy scenes, one subscriber
   double window = 5.0;
   for (std::size_t i = 2; i < args.size(); ++i) {
     if (args[i] == "--quick") {
       quick = true;
+    } else if (args[i] == "--delta") {
+      delta = true;
     } else if (args[i] == "--window" && i + 1 < args.size()) {
       window = std::atof(args[++i].c_str());
     } else {
@@ -398,11 +405,16 @@ int main(int argc, char** argv) {
   std::vector<Case> cases{{0, 10}};
   for (int bricks : quick ? std::vector<int>{100, 2000} : std::vector<int>{100, 1000, 2000, 10000})
     for (int moving : {0, 10}) cases.push_back({bricks, moving});
+  std::vector<int> subscriber_counts{0, 1, 3};
+  if (delta) {
+    cases = quick ? std::vector<Case>{{2000, 10}} : std::vector<Case>{{2000, 10}, {10000, 10}};
+    subscriber_counts = {1};
+  }
   std::vector<Row> rows;
   NodeBench bench(window, pid);
   int failed = 0;
   for (const Case& scene : cases)
-    if (!bench.run(scene, writeScene(scene, directory), &rows)) ++failed;
+    if (!bench.run(scene, writeScene(scene, directory), subscriber_counts, &rows)) ++failed;
   std::ofstream csv(args[1]);
   csv << "bricks,moving,subscribers,node_cpu,bricks_hz,markers_hz,tf_hz,bricks_bytes,"
          "markers_bytes,tf_bytes,get_bricks_p50_ms,get_bricks_p99_ms,query_p50_ms,query_p99_ms,"

@@ -67,38 +67,43 @@ BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
     return changes;
   }
 
-  // Three lists in placement order: what the mirror had, every serial the
-  // world has, and the snapshots of those that may have changed.
-  std::vector<MirroredBrick> next;
-  next.reserve(serials.size());
-  std::size_t old = 0;
-  std::size_t read = 0;
-  for (unsigned serial : serials) {
-    for (; old < bricks_.size() && bricks_[old].snapshot.serial < serial; ++old)
-      changes.removed.push_back(std::move(bricks_[old]));
-    MirroredBrick* before =
-        old < bricks_.size() && bricks_[old].snapshot.serial == serial ? &bricks_[old++] : nullptr;
-    const bool read_now = read < fresh.size() && fresh[read].serial == serial;
-    if (!read_now) {
-      // Unchanged by the world's account, so mirrored already: a brick the
-      // mirror has not seen is always among those read.
-      if (before) next.push_back(std::move(*before));
-      continue;
+  // Serials rise in placement order and are never reused: the world's list
+  // is the mirror's minus the removed bricks, plus new ones at its end. The
+  // mirror is kept in place (a settled scene moves none of its entries).
+  std::size_t kept = 0;
+  std::size_t next_serial = 0;
+  for (std::size_t i = 0; i < bricks_.size(); ++i) {
+    const unsigned serial = bricks_[i].snapshot.serial;
+    while (next_serial < serials.size() && serials[next_serial] < serial) ++next_serial;
+    if (next_serial < serials.size() && serials[next_serial] == serial) {
+      if (kept != i) bricks_[kept] = std::move(bricks_[i]);
+      ++kept;
+      ++next_serial;
+    } else {
+      changes.removed.push_back(std::move(bricks_[i]));
     }
-    MirroredBrick now = mirrored(world, std::move(fresh[read++]));
-    if (before && sameSnapshot(before->snapshot, now.snapshot) &&
-        before->described == now.described &&
-        (!now.described || sameGeometry(before->geometry, now.geometry))) {
-      next.push_back(std::move(*before));
-      continue;
-    }
-    changes.changed.push_back(next.size());
-    if (!before || before->snapshot.pose.matrix() != now.snapshot.pose.matrix())
-      changes.moved.push_back(next.size());
-    next.push_back(std::move(now));
   }
-  for (; old < bricks_.size(); ++old) changes.removed.push_back(std::move(bricks_[old]));
-  bricks_ = std::move(next);
+  bricks_.resize(kept);
+  // The snapshots read, in placement order, walked beside the mirror.
+  std::size_t at = 0;
+  for (BrickSnapshot& snapshot : fresh) {
+    while (at < bricks_.size() && bricks_[at].snapshot.serial < snapshot.serial) ++at;
+    MirroredBrick now = mirrored(world, std::move(snapshot));
+    if (at < bricks_.size() && bricks_[at].snapshot.serial == now.snapshot.serial) {
+      MirroredBrick& before = bricks_[at];
+      if (sameSnapshot(before.snapshot, now.snapshot) && before.described == now.described &&
+          (!now.described || sameGeometry(before.geometry, now.geometry)))
+        continue;
+      changes.changed.push_back(at);
+      if (before.snapshot.pose.matrix() != now.snapshot.pose.matrix()) changes.moved.push_back(at);
+      before = std::move(now);
+      continue;
+    }
+    // New: after every brick the mirror had, since serials only rise.
+    bricks_.insert(bricks_.begin() + static_cast<std::ptrdiff_t>(at), std::move(now));
+    changes.changed.push_back(at);
+    changes.moved.push_back(at);
+  }
   return changes;
 }
 

@@ -50,14 +50,6 @@ struct BrickSnapshot {
   unsigned serial = 0;     ///< Order of placement since the last reset, from 0; never reused.
 };
 
-/// Where a brick is, and nothing else: what tf needs at every publish, at a
-/// cost that does not ask the stability model anything.
-struct BrickPose {
-  std::string id;
-  unsigned serial = 0;  ///< As BrickSnapshot::serial: rising in placement order.
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< Centre, frame world.
-};
-
 /// Where a brick rests, for markers: each support patch and the combined hull
 /// as polygons in the world (counter-clockwise seen from above) [m].
 struct SupportGeometry {

@@ -107,6 +107,9 @@ class SimNode {
   /// advance(), then the state publication when it is due in sim time and
   /// the wall-time cap allows it (node.cpp says why there is a cap).
   void stepOnce();
+  /// The timer ticks at publish_rate while the world is settled, else at
+  /// step_timer_rate.
+  void adaptTimerRate();
   /// Restarts the wall/sim time pacing from now (after a pause, a reset, or
   /// when the world cannot keep up).
   void restartPacing();
@@ -164,6 +167,9 @@ class SimNode {
   std::atomic<bool> state_dirty_{true};
   /// The world as last published, and what viewers of ~markers show of it.
   BrickMirror mirror_;
+  /// The world as ~get_bricks last answered (a mirror apart: an answer
+  /// must not hide a change from the next publish).
+  BrickMirror answers_;
   std::unique_ptr<MarkerUpdates> marker_updates_;
   /// The next ~markers is a full array for every viewer (after a reset).
   bool markers_full_due_ = true;
@@ -182,6 +188,7 @@ class SimNode {
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;
+  double timer_rate_ = 0.0;  ///< Its current rate [Hz].
   /// ~step and ~reset: served by their own thread.
   ros::CallbackQueue long_work_queue_;
   std::unique_ptr<ros::AsyncSpinner> long_work_spinner_;

@@ -188,6 +188,13 @@ void BrickWorld::step() {
   assert(checkInvariants().ok);
 }
 
+bool BrickWorld::settled() const {
+  const WorldState& w = *state_;
+  if (!w.model || w.model_changed || !w.sets.held().empty()) return false;
+  return std::none_of(w.sets.movers().begin(), w.sets.movers().end(),
+                      [&w](const BrickRecord* brick) { return w.scene.isActive(brick->handle); });
+}
+
 // --- requests --------------------------------------------------------------------
 
 BrickWorld::BrickWorld(std::unique_ptr<WorldState> state) : state_(std::move(state)) {}
@@ -500,14 +507,6 @@ std::vector<BrickSnapshot> BrickWorld::snapshotChangedSince(std::uint64_t revisi
       changed.push_back(snapshotOf(w, *brick));
   }
   return changed;
-}
-
-std::vector<BrickPose> BrickWorld::poses() const {
-  std::vector<BrickPose> result;
-  result.reserve(state_->bricks.size());
-  for (const auto& brick : state_->bricks.all())
-    result.push_back({brick->id, brick->handle, state_->scene.pose(brick->handle)});
-  return result;
 }
 
 bool BrickWorld::find(const std::string& id, BrickSnapshot* brick) const {

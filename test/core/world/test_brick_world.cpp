@@ -132,27 +132,5 @@ TEST(BrickWorld, CostCountsAwakeBricks) {
   EXPECT_EQ(world->cost().nonfinite, 0u);
 }
 
-TEST(BrickWorld, PosesAreTheSnapshotsPosesInPlacementOrder) {
-  auto world = makeWorld();
-  ASSERT_TRUE(world->addBrick(placement("low", {0.0, 0.0, kKaplaThickness / 2})).ok);
-  ASSERT_TRUE(world->addBrick(placement("falling", {0.2, 0.1, 0.05}, 0.3)).ok);
-  ASSERT_TRUE(world->addBrick(placement("", {-0.2, 0.0, 0.03})).ok);
-  runFor(world.get(), 0.05);  // the falling ones are mid-air, turned
-  const std::vector<BrickSnapshot> snapshots = world->snapshot();
-  const std::vector<BrickPose> poses = world->poses();
-  ASSERT_EQ(poses.size(), 3u);
-  ASSERT_EQ(poses.size(), snapshots.size());
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    EXPECT_EQ(poses[i].id, snapshots[i].id);
-    EXPECT_EQ(poses[i].serial, snapshots[i].serial);
-    if (i > 0) {
-      EXPECT_GT(poses[i].serial, poses[i - 1].serial);
-    }
-    EXPECT_TRUE(poses[i].pose.matrix() == snapshots[i].pose.matrix()) << poses[i].id;
-  }
-  EXPECT_EQ(poses[1].id, "falling");
-  EXPECT_LT(poses[1].pose.translation().z(), 0.05) << "it did not fall: nothing was compared";
-}
-
 }  // namespace
 }  // namespace brick_stack_sim

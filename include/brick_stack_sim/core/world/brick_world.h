@@ -108,6 +108,10 @@ class BrickWorld {
 
   /// Advances the world by one fixed time step.
   void step();
+  /// A step would only advance the clock: a stability model runs, no brick
+  /// is awake in Bullet or held, and the model has nothing new to look at.
+  /// Until a request changes the world, a caller may step it in batches.
+  bool settled() const;
 
   double time() const;  ///< Sim time [s].
   const WorldOptions& options() const;
@@ -117,9 +121,6 @@ class BrickWorld {
   std::size_t brickCount() const;
   /// Every brick, in placement order.
   std::vector<BrickSnapshot> snapshot() const;
-  /// Every brick's pose alone, in placement order: a fraction of the cost of
-  /// snapshot(), whose stability fields ask the model about each brick.
-  std::vector<BrickPose> poses() const;
   /// A count that grows with every step and every request that may change
   /// a brick: a publisher keeps the value it last saw, and asks
   /// snapshotChangedSince() for what changed after it.
