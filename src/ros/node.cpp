@@ -245,11 +245,13 @@ void SimNode::adaptTimerRate() {
   // one only publishes at publish_rate: ticking at publish_rate instead of
   // step_timer_rate is most of what an idle node costs (the wake-ups, not
   // the steps). Not with real_time_factor 0, whose clock runs as fast as
-  // the ticks let it.
-  const bool idle = paused_ || (options_.config.publish.real_time_factor > 0.0 &&
+  // the ticks let it, nor while /clock drives the graph: clients' sim-time
+  // timers would fire no finer than the ticks.
+  const PublishOptions& publish = options_.config.publish;
+  const bool idle = paused_ || (publish.real_time_factor > 0.0 && !publish.clock &&
                                 simulation_->world().settled() && simulation_->player().done());
-  const double rate = idle ? std::min(options_.config.publish.rate, options_.step_timer_rate)
-                           : options_.step_timer_rate;
+  const double rate =
+      idle ? std::min(publish.rate, options_.step_timer_rate) : options_.step_timer_rate;
   if (rate == timer_rate_) return;
   timer_rate_ = rate;
   step_timer_.setPeriod(ros::WallDuration(1.0 / rate), false);
@@ -290,6 +292,9 @@ void SimNode::publishState() {
   const ros::Time now = stamp();
   // The world names what may have changed; only that is read, compared and sent.
   const BrickMirror::Changes changes = mirror_.update(simulation_->world());
+  // After a reset, ~get_bricks' mirror starts from this one rather than
+  // reading every brick again in the first call (a copy costs a fraction).
+  if (answers_.forgotten()) answers_ = mirror_;
   int not_finite = 0;
   transforms_->publish(mirror_, changes, now, &not_finite);
   if (not_finite > 0) ROS_WARN_THROTTLE(5.0, "%d bricks left off tf: pose not finite", not_finite);

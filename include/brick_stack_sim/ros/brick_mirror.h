@@ -49,6 +49,9 @@ class BrickMirror {
   /// again, so the next update reads every brick and reports the old ones
   /// removed.
   void forget() { replaced_ = true; }
+  /// forget() was called and no update() has followed: the next reads
+  /// every brick.
+  bool forgotten() const { return replaced_; }
 
   /// Every brick, in placement order (rising serials).
   const std::vector<MirroredBrick>& bricks() const { return bricks_; }
