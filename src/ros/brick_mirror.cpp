@@ -54,6 +54,8 @@ BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
     changes.removed = std::move(bricks_);
     bricks_.clear();
     replaced_ = false;
+  } else if (world.revision() == revision_) {
+    return changes;  // nothing happened: not even a walk over the bricks
   } else {
     fresh = world.snapshotChangedSince(revision_, &serials);
   }

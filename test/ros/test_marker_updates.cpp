@@ -129,8 +129,7 @@ TEST_F(MarkerUpdatesTest, AViewerThatAppliesTheUpdatesShowsWhatIsBuiltFromScratc
   }
   EXPECT_GT(fell + dynamic, 3) << "nothing collapsed: the test proved less than it says";
 
-  for (const std::string& id : {"t0", "p3", "p40", "landing"})
-    ASSERT_TRUE(world_->removeBrick(id).ok);
+  for (const char* id : {"t0", "p3", "p40", "landing"}) ASSERT_TRUE(world_->removeBrick(id).ok);
   runAndPublish(0.5, "the removals");
 
   // A reset: a new world, whose serials start again.

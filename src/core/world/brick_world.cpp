@@ -161,7 +161,6 @@ void BrickWorld::step() {
   StepContext step;
   for (const BrickRecord* brick : w.sets.movers()) step.awake += w.scene.isActive(brick->handle);
   ++w.cost.steps;
-  ++w.revision;
   w.placed_at_rest.clear();
   // Plain Bullet (mode none) is the baseline and always steps; with a model,
   // a world where nothing is awake has nothing for Bullet to do.
@@ -169,6 +168,9 @@ void BrickWorld::step() {
   step.advance_bullet = !w.model || step.awake > 0 || !w.sets.held().empty();
   // Nothing moved and nothing is pending: the model would find what it found.
   step.run_model = w.model && (step.advance_bullet || w.model_changed);
+  // A step that neither moves Bullet nor runs the model changes no brick:
+  // a publisher of a settled world then finds nothing to look at.
+  if (step.advance_bullet || step.run_model) ++w.revision;
 
   // 1. Advance Bullet for the awake bricks.
   if (step.advance_bullet) timed(&w.cost.bullet_seconds, [&] { advanceBullet(&w, step); });

@@ -172,7 +172,9 @@ TEST_P(ChangeTracking, EveryChangeIsReportedAndASettledWorldReportsNothing) {
   for (int i = 0; i < 100; ++i) {
     world_->step();
     const std::set<std::string> ids = look("the brick landing on A, step " + std::to_string(i));
-    if (freezes) EXPECT_FALSE(anyOfTower(ids, 'b')) << "a brick of tower B reported at step " << i;
+    if (freezes) {
+      EXPECT_FALSE(anyOfTower(ids, 'b')) << "a brick of tower B reported at step " << i;
+    }
     reported_a |= anyOfTower(ids, 'a') && ids.size() > 1;
   }
   EXPECT_TRUE(reported_a) << "the landing brick froze without redescribing the tower under it";

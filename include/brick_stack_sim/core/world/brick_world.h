@@ -122,8 +122,9 @@ class BrickWorld {
   /// Every brick, in placement order.
   std::vector<BrickSnapshot> snapshot() const;
   /// A count that grows with every step and every request that may change
-  /// a brick: a publisher keeps the value it last saw, and asks
-  /// snapshotChangedSince() for what changed after it.
+  /// a brick (a step of a settled() world changes none): a publisher keeps
+  /// the value it last saw, and asks snapshotChangedSince() for what
+  /// changed after it.
   std::uint64_t revision() const;
   /// The bricks whose snapshot() or supportGeometry() may differ from what
   /// they were when revision() was `revision`, in placement order: every
