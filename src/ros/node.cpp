@@ -304,9 +304,11 @@ void SimNode::publishState() {
       ROS_WARN_THROTTLE(5.0, "not published: brick %s has a number that is not finite",
                         brick.snapshot.id.c_str());
   }
-  if (bricks_publisher_.getNumSubscribers() > 0)
+  if (bricks_publisher_.getNumSubscribers() > 0) {
+    ++bricks_sequence_;
     bricks_publisher_.publish(
         makeBrickArray(options_.config.publish.bricks_delta ? &changes : nullptr, now));
+  }
   if (markers_publisher_.getNumSubscribers() > 0) {
     // The world's table, not the parameters': a scene may bring its own.
     if (changes.replaced || markers_full_due_) {
@@ -327,6 +329,7 @@ BrickArray SimNode::makeBrickArray(const BrickMirror::Changes* changes,
   BrickArray array;
   array.header.stamp = stamp;
   array.header.frame_id = options_.config.publish.frame_id;
+  array.sequence = bricks_sequence_;
   const std::vector<MirroredBrick>& bricks = mirror_.bricks();
   if (!changes) {
     array.kind = BrickArray::FULL;

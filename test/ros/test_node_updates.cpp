@@ -72,6 +72,10 @@ class DeltaClient {
     std::lock_guard<std::mutex> lock(mutex_);
     return kind == BrickArray::FULL ? full_ : deltas_;
   }
+  int gaps() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return gaps_;
+  }
   std::uint8_t firstKind() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return first_kind_;
@@ -82,6 +86,10 @@ class DeltaClient {
   void apply(const BrickArray& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (full_ + deltas_ == 0) first_kind_ = msg.kind;
+    // Deltas follow each other without a gap (the queue is long enough).
+    if (msg.kind == BrickArray::DELTA && full_ + deltas_ > 0 && msg.sequence != sequence_ + 1)
+      ++gaps_;
+    sequence_ = msg.sequence;
     if (msg.kind == BrickArray::FULL) {
       ++full_;
       bricks_.clear();
@@ -94,7 +102,8 @@ class DeltaClient {
 
   mutable std::mutex mutex_;
   std::map<std::string, Brick> bricks_;
-  int full_ = 0, deltas_ = 0;
+  int full_ = 0, deltas_ = 0, gaps_ = 0;
+  std::uint32_t sequence_ = 0;
   std::uint8_t first_kind_ = 255;
   ros::Subscriber sub_;
 };
@@ -250,6 +259,7 @@ TEST_F(NodeUpdates, AppliedDeltasAndMarkerUpdatesEqualTheStateFromScratch) {
   expectClientsAreUpToDate("after the reset");
 
   EXPECT_EQ(deltas_->messages(BrickArray::FULL), 1) << "a FULL message after the first";
+  EXPECT_EQ(deltas_->gaps(), 0) << "deltas whose sequence skipped one";
   EXPECT_GT(deltas_->messages(BrickArray::DELTA), 10);
 }
 

@@ -173,6 +173,8 @@ class SimNode {
   std::unique_ptr<MarkerUpdates> marker_updates_;
   /// The next ~markers is a full array for every viewer (after a reset).
   bool markers_full_due_ = true;
+  /// BrickArray::sequence of the last ~bricks sent to every subscriber.
+  std::uint32_t bricks_sequence_ = 0;
   double next_publish_time_ = 0.0;    ///< Sim time of the next ~bricks [s].
   ros::WallTime last_state_publish_;  ///< Wall time of the last ~bricks.
   ros::WallTime pacing_wall_start_;
