@@ -1,6 +1,5 @@
 #pragma once
 
-#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -164,7 +163,7 @@ class SimNode {
 
   bool paused_ = false;
   /// Something changed that ~bricks has not shown yet.
-  std::atomic<bool> state_dirty_{true};
+  bool state_dirty_ = true;
   /// The world as last published, and what viewers of ~markers show of it.
   BrickMirror mirror_;
   /// The world as ~get_bricks last answered (a mirror apart: an answer
