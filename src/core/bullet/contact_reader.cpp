@@ -35,9 +35,14 @@ void readContacts(const BulletScene& scene, double contact_distance,
       // The normal points from b to a: a negative relative speed along it closes the gap.
       pair.approach_speed = std::max(pair.approach_speed, -relative.dot(point.m_normalWorldOnB));
       pair.points.push_back(convertBtToEigen(position));
+      // The solver applies friction along its lateral directions, on a with
+      // a positive sign, as it applies the normal impulse.
+      const btVector3 friction = point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
+                                 point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
       pair.manifold.push_back(ContactPoint{convertBtToEigen(position),
                                            convertBtToEigen(point.m_normalWorldOnB),
-                                           point.getDistance(), point.getAppliedImpulse()});
+                                           point.getDistance(), point.getAppliedImpulse(),
+                                           convertBtToEigen(friction)});
       pair.friction = point.m_combinedFriction;
       normal_sum += point.m_normalWorldOnB;
     }

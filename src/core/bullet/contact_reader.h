@@ -10,8 +10,9 @@ class BulletScene;
 
 /// The touching pairs of the scene's last step, read from Bullet's contact
 /// manifolds: per pair, every point closer than `contact_distance` [m] with
-/// its position, normal, depth and the normal impulse the solver applied, the
-/// mean normal, the fastest closing speed and the pair's combined friction.
+/// its position, normal, depth and the normal and friction impulses the
+/// solver applied, the mean normal, the fastest closing speed and the pair's
+/// combined friction.
 /// Pairs without such a point are left out. `points` is filled with the
 /// points' positions; refining it into a support patch is not Bullet's job.
 void readContacts(const BulletScene& scene, double contact_distance,

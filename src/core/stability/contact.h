@@ -31,6 +31,8 @@ struct ContactPoint {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   ///< Unit, from b towards a.
   double depth = 0.0;    ///< Signed distance of the surfaces [m], < 0: penetrating.
   double impulse = 0.0;  ///< Normal impulse applied in the last step [N s].
+  /// Friction impulse on a in the last step [N s], world (in the contact plane).
+  Eigen::Vector3d friction_impulse = Eigen::Vector3d::Zero();
 };
 
 /// The touching points of one pair of bodies in one step.

@@ -46,6 +46,33 @@ TEST(ContactReader, ARestingBrickCarriesItsWeightThroughTheTable) {
   EXPECT_LT(pair.approach_speed, 1e-3);
 }
 
+TEST(ContactReader, ASlidingBrickIsHeldBackByKineticFrictionMuMg) {
+  // Coulomb: a brick sliding on the table feels mu m g against its motion,
+  // and the table still carries its weight.
+  WorldOptions options;
+  options.table.friction = 0.5;
+  BulletScene scene(options);
+  BrickType kapla = *test::packageTypes().find("kapla");
+  kapla.friction = 0.5;
+  BrickPlacement sliding = test::placement("b0", {0.0, 0.0, test::kKaplaThickness / 2});
+  sliding.linear_velocity = Eigen::Vector3d(1.0, 0.0, 0.0);
+  scene.addBrick(0, kapla, sliding);
+  for (int i = 0; i < 20; ++i) scene.step(options.time_step);
+  ASSERT_GT(scene.linearVelocity(0).x(), 0.5);  // still sliding
+  std::vector<PairContact> contacts;
+  readContacts(scene, options.stability.contact_distance, &contacts);
+  ASSERT_EQ(contacts.size(), 1u);
+  const PairContact& pair = contacts[0];
+  const double on_brick = pair.a == 0 ? 1.0 : -1.0;  // impulses are on a
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  for (const ContactPoint& point : pair.manifold)
+    impulse += on_brick * (point.impulse * point.normal + point.friction_impulse);
+  const double weight_step = kapla.mass * options.gravity * options.time_step;
+  EXPECT_NEAR(impulse.z(), weight_step, 0.02 * weight_step);
+  EXPECT_NEAR(impulse.x(), -0.5 * weight_step, 0.02 * weight_step);
+  EXPECT_NEAR(impulse.y(), 0.0, 0.01 * weight_step);
+}
+
 TEST(ContactReader, BodiesApartAreNoContact) {
   WorldOptions options;
   BulletScene scene(options);
