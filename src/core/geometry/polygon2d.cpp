@@ -73,6 +73,23 @@ double signedDistance(const Polygon2d& hull, const Eigen::Vector2d& point) {
   return inside ? nearest_edge : -nearest_edge;
 }
 
+Eigen::Vector2d nearestPoint(const Polygon2d& hull, const Eigen::Vector2d& point) {
+  if (hull.empty() || (hull.size() >= 3 && signedDistance(hull, point) >= 0.0)) return point;
+  if (hull.size() == 1) return hull[0];
+  Eigen::Vector2d nearest = hull[0];
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d& a = hull[i];
+    const Eigen::Vector2d& b = hull[(i + 1) % hull.size()];
+    const Eigen::Vector2d edge = b - a;
+    const double t =
+        edge.squaredNorm() > 0.0 ? std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0)
+                                 : 0.0;
+    const Eigen::Vector2d candidate = a + t * edge;
+    if ((candidate - point).squaredNorm() < (nearest - point).squaredNorm()) nearest = candidate;
+  }
+  return nearest;
+}
+
 bool contains(const Polygon2d& hull, const Eigen::Vector2d& point, double tolerance) {
   return signedDistance(hull, point) >= -tolerance;
 }

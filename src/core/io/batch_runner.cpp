@@ -92,6 +92,7 @@ std::string toJson(const RunReport& r) {
   json.key("steps").value(static_cast<unsigned long long>(r.cost.steps));
   json.key("nonfinite").value(static_cast<unsigned long long>(r.cost.nonfinite));
   json.key("blowups").value(static_cast<unsigned long long>(r.cost.blowups));
+  json.key("wake_cycles").value(static_cast<unsigned long long>(r.cost.wake_cycles));
   json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
   json.key("lost").value(static_cast<unsigned long long>(r.lost()));
   json.key("missing").value(static_cast<unsigned long long>(r.missing()));

@@ -1,6 +1,7 @@
 #include "stability/com_criterion.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
@@ -13,6 +14,18 @@ namespace {
 /// The unit every load passed between bricks is measured in [m/s^2]
 /// (LoadShare holds masses, PointForce newtons; statics, the same g).
 const double kGravity = StaticsOptions().gravity;
+
+/// A frozen brick is judged with the loads measured on it from bodies the
+/// stack does not hold taken this much smaller [-]: the engine measures a
+/// steady load within a fraction of a percent, and a structure that statics
+/// holds within that noise of its limit must not wake, freeze again where
+/// it is and wake at the next jitter. A load that tips what it rests on
+/// (a brick tipping off it, a hand pressing) is far past it.
+constexpr double kMeasuredLoadFactor = 0.98;
+
+/// A support patch whose normal is further than this from vertical is
+/// inclined [rad]: 20 mrad needs a friction coefficient of 0.02.
+constexpr double kFlatSupport = 0.02;
 
 /// The resultant of a brick's vertical load (`mass` acting through
 /// `centre`) and `pushes`, where its line of action crosses the plane
@@ -55,6 +68,33 @@ ComCriterion::ComCriterion(const StabilityOptions& options, BodyNamer name_of)
 
 void ComCriterion::evaluate(const BodyMotion& brick, BrickStability* stability) const {
   evaluateSupport(brick.com, stability);
+  if (stability->external_loads.empty() || stability->supports.empty()) return;
+  // What presses on it from outside the stack moves its COM-above to where
+  // the resultant crosses its support plane.
+  Resultant resultant;
+  if (!resultantOnPlane(brick.mass, brick.com.head<2>(), stability->external_loads,
+                        stability->support_height, &resultant))
+    return;  // lifted: admits() says no
+  const Eigen::Vector3d point(resultant.point.x(), resultant.point.y(), brick.com.z());
+  evaluateSupport(point, stability);
+  stability->mass_above = resultant.mass;
+}
+
+bool ComCriterion::loadsHold(const BodyMotion& brick, const BrickStability& stability) const {
+  if (stability.external_loads.empty()) return true;
+  Resultant resultant;
+  if (!resultantOnPlane(brick.mass, brick.com.head<2>(), stability.external_loads,
+                        stability.support_height, &resultant))
+    return false;
+  return resultant.sideways.norm() <= leastFriction(stability.supports) * resultant.mass * kGravity;
+}
+
+bool ComCriterion::inclined(const BrickStability& stability) const {
+  const double flat = std::cos(kFlatSupport);
+  for (const SupportPatch& patch : stability.supports)
+    for (const Eigen::Vector3d& normal : patch.normals)
+      if (normal.z() < flat) return true;
+  return false;
 }
 
 bool ComCriterion::leans(const BrickStability& stability) const {
@@ -69,6 +109,8 @@ bool ComCriterion::stands(const std::vector<BodyMotion>& bricks,
   for (std::size_t i = 0; i < bricks.size(); ++i) {
     assembly.addPatches(static_cast<int>(i), stability[i]->supports);
     assembly.addPatches(static_cast<int>(i), stability[i]->side_contacts);
+    for (const PointForce& load : stability[i]->external_loads)
+      assembly.addLoad(static_cast<int>(i), load);
   }
   const StaticsSolution solution = assembly.solve();
   return solution.solved && solution.feasible;
@@ -91,7 +133,10 @@ FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
 
 bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stability,
                           FreezeDecision* decision) const {
-  if (!stability.supports.empty() && stability.margin > options_.min_margin) {
+  // On inclined supports the COM rule cannot tell a brick that rests from
+  // one that slides: friction must carry the slope, which statics checks.
+  if (!stability.supports.empty() && stability.margin > options_.min_margin &&
+      loadsHold(brick, stability) && (!inclined(stability) || stands({brick}, {&stability}))) {
     *decision = FreezeDecision{brick.handle, BrickState::kStable, stability.margin, {}, ""};
     std::string on;
     for (const SupportPatch& patch : stability.supports) {
@@ -146,15 +191,17 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
   node.stability.mass_above = mass;
   node.stability.supports = node.supports;
   evaluateSupport(com_above, &node.stability);
+  bool stays = true;
   Resultant resultant;
   resultant.mass = mass;
   if (!node.pushes.empty()) {
-    // Leaning bricks push it: the resultant crosses its support plane
-    // where it would tip about, and its sideways part must stay in friction.
+    // Leaning bricks, movers and held bricks push it: the resultant crosses
+    // its support plane where it would tip about, and its sideways part
+    // must stay in friction.
     if (!resultantOnPlane(mass, com_above.head<2>(), node.pushes, node.stability.support_height,
                           &resultant)) {
       unstable->push_back(WakeDecision{handle, WakeCause::kOutsideSupport, handle, 0.0,
-                                       "the bricks leaning on it lift it"});
+                                       "what presses on it lifts it"});
       return false;
     }
     com_above.head<2>() = resultant.point;
@@ -164,20 +211,26 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
     if (resultant.sideways.norm() > holds) {
       unstable->push_back(WakeDecision{
           handle, WakeCause::kOutsideSupport, handle, node.stability.margin,
-          "the bricks leaning on it push it sideways with " + newtons(resultant.sideways.norm()) +
+          "what presses on it pushes it sideways with " + newtons(resultant.sideways.norm()) +
               ", more than friction holds (" + newtons(holds) + ")"});
-      return false;
+      stays = false;
+      resultant.sideways *= holds / resultant.sideways.norm();  // all friction passes on
     }
   }
   node.supports = node.stability.supports;  // keep the hulls
-  if (node.stability.margin <= options_.min_margin) {
+  Eigen::Vector2d acts_at = com_above.head<2>();
+  if (stays && node.stability.margin <= options_.min_margin) {
     unstable->push_back(outsideSupport(handle, node.stability.margin));
-    return false;
+    stays = false;
   }
+  // A brick that cannot stay starts to tip about the edge of its support,
+  // still pressing with its load there: what carries it must bear that too,
+  // so that a stack that fails as a whole wakes as a whole.
+  if (!stays) acts_at = nearestPoint(node.stability.combined_hull, acts_at);
   std::vector<Polygon2d> patches;
   for (const SupportPatch& patch : node.supports) patches.push_back(patch.hull);
-  if (distributeLoad(mass, com_above.head<2>(), patches, shares) == LoadSplitRule::kUnsupported) {
-    unstable->push_back(outsideSupport(handle, node.stability.margin));
+  if (distributeLoad(mass, acts_at, patches, shares) == LoadSplitRule::kUnsupported) {
+    if (stays) unstable->push_back(outsideSupport(handle, node.stability.margin));
     return false;
   }
   for (std::size_t i = 0; i < node.supports.size(); ++i) {
@@ -193,7 +246,7 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
                          (share.mass / mass),
                      Eigen::Vector3d(share.point.x(), share.point.y(), node.supports[i].height)});
   }
-  return true;
+  return stays;
 }
 
 void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHandle>& group,
@@ -253,11 +306,24 @@ void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHan
 
 std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
                                               const std::vector<BodyHandle>& component) const {
+  bool shared = false;
+  std::vector<WakeDecision> unstable = checkLoadsDown(graph, component, &shared);
+  if (unstable.empty() || !(shared || statics_on_every_failure_)) return unstable;
+  return judgeByStatics(graph, component, std::move(unstable));
+}
+
+std::vector<WakeDecision> ComCriterion::checkLoadsDown(SupportGraph* graph,
+                                                       const std::vector<BodyHandle>& component,
+                                                       bool* shared) const {
   for (BodyHandle handle : component) {
     SupportGraph::Node& node = *graph->find(handle);
     node.received.clear();
-    node.pushes.clear();
+    // What movers and held bricks press on it, then what bricks of the
+    // stack push it with.
+    node.pushes = node.stability.external_loads;
+    for (PointForce& push : node.pushes) push.force *= kMeasuredLoadFactor;
     node.stability.contact_forces.clear();
+    if (node.supports.size() > 1) *shared = true;
   }
   const SupportGraph::LeaningTest leans_on = [this](const SupportPatch& patch) {
     return leansOn(patch, options_);
@@ -271,6 +337,7 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
       return graph->find(handle)->leaning;
     });
     if (leaning) {
+      *shared = true;
       balanceLeaning(graph, group, &unstable);
     } else if (group.size() > 1) {
       // Bricks resting on each other in a ring: nothing can be said to carry them.
@@ -282,6 +349,36 @@ std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
     }
   }
   return unstable;
+}
+
+std::vector<WakeDecision> ComCriterion::judgeByStatics(SupportGraph* graph,
+                                                       const std::vector<BodyHandle>& component,
+                                                       std::vector<WakeDecision> by_com) const {
+  const StaticsAssembly assembly =
+      assembleStatics(*graph, component, options_, kMeasuredLoadFactor);
+  const StaticsSolution solution = assembly.solve(&basis_);
+  // A solver failure keeps the COM rule's answer: never freeze on no answer.
+  if (!solution.solved) return by_com;
+  std::vector<std::vector<ContactForce>> forces = assembly.contactForces(solution);
+  for (std::size_t i = 0; i < component.size(); ++i)
+    graph->find(component[i])->stability.contact_forces = std::move(forces[i]);
+  if (solution.feasible) return {};
+  // What wakes is the collapse mechanism: every brick that moves in it, at
+  // once. A part of it would be held by the bricks the same failure must
+  // move, and would stand there frozen again.
+  double unbalanced = 0.0;
+  for (double imbalance : solution.imbalance) unbalanced += imbalance;
+  std::vector<WakeDecision> mechanism;
+  for (std::size_t i = 0; i < component.size(); ++i) {
+    if (!solution.moves[i]) continue;
+    mechanism.push_back(
+        WakeDecision{component[i], WakeCause::kOutsideSupport, component[i],
+                     graph->find(component[i])->stability.margin,
+                     "no contact forces within friction balance the structure; it moves in its "
+                     "collapse mechanism (statics: " +
+                         percent(unbalanced) + " of a brick's weight unbalanced)"});
+  }
+  return mechanism.empty() ? by_com : mechanism;
 }
 
 }  // namespace brick_stack_sim

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "stability/rigid_block_statics.h"
 #include "stability/stability_criterion.h"
 #include "stability/support_graph.h"
 
@@ -38,9 +39,24 @@ class ComCriterion : public StabilityCriterion {
                    std::vector<FreezeDecision>* decisions) const override;
 
  protected:
-  const StabilityOptions& options() const { return options_; }
+  /// Every failure the COM rule finds is judged by the statics of the
+  /// whole component (mode equilibrium); else only failures in components
+  /// where loads are shared, whose split the rule can only guess.
+  void judgeEveryFailureByStatics() { statics_on_every_failure_ = true; }
 
  private:
+  /// The COM rule, loads passed down group by group; `shared` is set when
+  /// a load is split among several supporters or balanced by statics (a
+  /// leaning group): there the rule's split is one of many.
+  std::vector<WakeDecision> checkLoadsDown(SupportGraph* graph,
+                                           const std::vector<BodyHandle>& component,
+                                           bool* shared) const;
+  /// Rigid-block statics of the whole component, every brick free: none
+  /// wakes when contact forces within friction balance it; else the bricks
+  /// of its collapse mechanism. `by_com` when the LP does not solve.
+  std::vector<WakeDecision> judgeByStatics(SupportGraph* graph,
+                                           const std::vector<BodyHandle>& component,
+                                           std::vector<WakeDecision> by_com) const;
   /// One brick that passes its load down its supports: its COM-above from
   /// the loads it receives, judged against its hull; its load split among
   /// its supporters. False (and `unstable`) when it cannot stay.
@@ -54,6 +70,11 @@ class ComCriterion : public StabilityCriterion {
   /// is not one of them fixed, stand.
   bool stands(const std::vector<BodyMotion>& bricks,
               const std::vector<const BrickStability*>& stability) const;
+  /// Whether the loads pressing on it from outside the stack leave it
+  /// pressed onto its supports, sideways within friction.
+  bool loadsHold(const BodyMotion& brick, const BrickStability& stability) const;
+  /// Whether a support patch of it is inclined (not flat within kFlatSupport).
+  bool inclined(const BrickStability& stability) const;
   /// Whether it leans on something (a side contact other than a brick resting on it).
   bool leans(const BrickStability& stability) const;
   /// Admitted by statics: stable or leaning, and on what.
@@ -62,6 +83,10 @@ class ComCriterion : public StabilityCriterion {
 
   StabilityOptions options_;
   BodyNamer name_of_;
+  bool statics_on_every_failure_ = false;
+  /// The last component LP's basis: a structure that grows brick by brick
+  /// is re-solved from it (a warm start) rather than from scratch.
+  mutable StaticsBasis basis_;
 };
 
 }  // namespace brick_stack_sim

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "stability/com_criterion.h"
-#include "stability/rigid_block_statics.h"
 
 namespace brick_stack_sim {
 
@@ -16,25 +15,14 @@ namespace brick_stack_sim {
 /// every changed component and fills what the markers show: where it finds
 /// every brick balanced, that is an equilibrium and the LP is skipped.
 /// Where it finds a brick that cannot stay, the LP of the whole component,
-/// every brick free, decides. When it has no solution, the bricks that
-/// wake are those that, with all they hold, cannot stand on the rest held
-/// fixed: never one the statics shows to be held by what is under it.
+/// every brick free, decides; when it has no solution, the bricks of the
+/// collapse mechanism its dual names wake, together.
 class EquilibriumCriterion : public ComCriterion {
  public:
-  using ComCriterion::ComCriterion;
-
-  std::vector<WakeDecision> check(SupportGraph* graph,
-                                  const std::vector<BodyHandle>& component) const override;
-
- private:
-  /// Whether `brick` with everything resting or leaning on it, directly or
-  /// not, stands with every other body held fixed. Each check spends its
-  /// number of bricks from `budget`; false once that is spent.
-  bool standsOnTheRest(const SupportGraph& graph, BodyHandle brick, std::size_t* budget) const;
-
-  /// The last component LP's basis: a structure that grows brick by brick
-  /// is re-solved from it (a warm start) rather than from scratch.
-  mutable StaticsBasis basis_;
+  EquilibriumCriterion(const StabilityOptions& options, BodyNamer name_of)
+      : ComCriterion(options, std::move(name_of)) {
+    judgeEveryFailureByStatics();
+  }
 };
 
 }  // namespace brick_stack_sim

@@ -13,6 +13,11 @@ class RestTracker {
   struct Mover {
     double rest_time = 0.0;  ///< [s] below both rest speeds, without a break.
     BrickStability stability;
+    /// Woken by the model, and where its centre of mass was then [m]: until
+    /// it has moved away from there, it may freeze again only when statics
+    /// holds with a margin (else it would freeze and wake for ever).
+    bool woken = false;
+    Eigen::Vector3d woken_at = Eigen::Vector3d::Zero();
   };
 
   explicit RestTracker(const StabilityOptions& options) : options_(options) {}

@@ -10,6 +10,10 @@ namespace brick_stack_sim {
 
 namespace {
 
+/// A body whose dual velocity (at most 1) exceeds this moves in the
+/// mechanism; below it is the simplex's rounding.
+constexpr double kMoving = 1e-7;
+
 /// The LP in Clp's column form. Rows: 6 per free body (force x, y, z, then
 /// torque about its COM x, y, z), in units of the largest load on a free
 /// body (its weight or an applied force) and (for torques) the problem's size, so Clp's absolute
@@ -276,6 +280,7 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
                              const StaticsOptions& options, StaticsWarmStart* warm) {
   StaticsSolution solution;
   solution.imbalance.assign(bodies.size(), 0.0);
+  solution.moves.assign(bodies.size(), false);
   solution.forces.assign(contacts.size(), Eigen::Vector3d::Zero());
   EquilibriumLp lp(bodies, options);
   if (lp.rowCount() == 0) {
@@ -331,6 +336,20 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
   solution.feasible = total <= options.tolerance * std::max<std::size_t>(1, bodies.size());
   for (double& value : solution.imbalance)
     if (value <= options.tolerance) value = 0.0;
+  if (!solution.feasible) {
+    // The dual of "least imbalance" is a velocity per row (a body's
+    // translation, and rotation times the problem's size), at most 1 each,
+    // in which no contact does positive work (reduced costs of the force
+    // columns >= 0) and the loads' work is the least imbalance. The bodies
+    // it moves are the mechanism; those it leaves still are held.
+    const double* velocity = model.dualRowSolution();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const int row = lp.rowOf(static_cast<int>(i));
+      if (row < 0) continue;
+      for (int k = 0; k < 6; ++k)
+        if (std::abs(velocity[row + k]) > kMoving) solution.moves[i] = true;
+    }
+  }
   return solution;
 }
 

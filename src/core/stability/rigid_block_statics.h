@@ -86,6 +86,13 @@ struct StaticsSolution {
   /// on a free body (torques over the problem's size) [-]; 0 for bodies that
   /// are balanced, and for fixed ones. The bodies that must move.
   std::vector<double> imbalance;
+  /// Per body, when not feasible: whether it moves in the collapse
+  /// mechanism the LP's dual names, a virtual motion of the free bodies that
+  /// every contact admits (touching faces part or slide within friction)
+  /// and in which the loads do work. Those bodies cannot stay, together:
+  /// with every other body held fixed they still cannot stand. False for
+  /// fixed bodies and in a feasible solution.
+  std::vector<bool> moves;
   /// Per contact: the force on `a` in that solution [N], world.
   std::vector<Eigen::Vector3d> forces;
   int iterations = 0;  ///< Simplex pivots Clp took.

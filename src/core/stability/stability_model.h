@@ -54,6 +54,10 @@ struct BrickStability {
   /// Its contact forces where the last check solved statics for it (a
   /// leaning group; any brick of a component whose LP ran); else empty.
   std::vector<ContactForce> contact_forces;
+  /// What bodies the stack does not hold (moving and held bricks) press on
+  /// it with, measured (ContactLoads), in statics' g like every load passed
+  /// between bricks [N] at their points [m], world.
+  std::vector<PointForce> external_loads;
 };
 
 /// Why a brick left the stack.
@@ -82,6 +86,9 @@ struct WakeDecision {
   BodyHandle because_of = 0;  ///< The woken or removed brick for kCarried, kSupporterRemoved.
   double margin = 0.0;        ///< For kOutsideSupport [m].
   std::string reason;         ///< Worded by the model, for ~events.
+  /// The model woke it before, it froze again without having moved, and
+  /// the model wakes it again: a wake/refreeze cycle (counted, reported).
+  bool repeats = false;
 };
 
 struct StabilityDecisions {
@@ -102,6 +109,9 @@ struct RestingPlacement {
 /// through StabilityModel::decide, so a model has one place where it reacts.
 struct StabilityInput {
   double dt = 0.0;                 ///< Sim time since the last step [s]; 0 between steps.
+  /// The world's gravity [m/s^2]: contact impulses become loads in the g
+  /// statics weighs bricks in.
+  double gravity = 9.81;
   std::vector<BodyMotion> movers;  ///< The bricks Bullet simulates, after this step.
   /// This step's touching pairs (frozen-frozen pairs never touch in Bullet);
   /// null when there are none to tell.

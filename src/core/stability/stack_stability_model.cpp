@@ -15,6 +15,41 @@ namespace brick_stack_sim {
 
 namespace {
 
+/// A measured load changes what a frozen brick bears when its total force
+/// or moment moves by more than this fraction of the brick's weight (and of
+/// its weight times a millimetre): loads of bricks at rest jitter far less,
+/// and a check per step for nothing would cost a tower its settled price.
+constexpr double kLoadChange = 0.01;
+constexpr double kLoadLever = 1e-3;  ///< [m]
+/// A brick the model woke has moved once its centre of mass is this far
+/// from where it was woken [m]: a brick held where it is moves a few
+/// micrometres, one that tipped or slid a visible distance.
+constexpr double kMovedAway = 1e-3;
+/// A brick that has not moved since the model woke it freezes again only
+/// when statics holds with every measured load this much larger [-]: the
+/// loads of moving bricks jitter, and statics at its limit would wake it
+/// again at the next jitter.
+constexpr double kRefreezeLoadFactor = 1.1;
+
+/// The total force and its moment about `about` of `loads`.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> resultantOf(const std::vector<PointForce>& loads,
+                                                        const Eigen::Vector3d& about) {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  for (const PointForce& load : loads) {
+    force += load.force;
+    moment += (load.point - about).cross(load.force);
+  }
+  return {force, moment};
+}
+
+bool loadsDiffer(const std::vector<PointForce>& before, const std::vector<PointForce>& now,
+                 const Eigen::Vector3d& com, double weight) {
+  const auto [force_before, moment_before] = resultantOf(before, com);
+  const auto [force_now, moment_now] = resultantOf(now, com);
+  return (force_now - force_before).norm() > kLoadChange * weight ||
+         (moment_now - moment_before).norm() > kLoadChange * weight * kLoadLever;
+}
+
 /// `body` joins `graph` on its supports and side contacts. A frozen brick
 /// resting on it from above (it was slid under a bridge) gains it as a
 /// supporter: that brick's load now has one more way down.
@@ -26,6 +61,7 @@ void join(SupportGraph* graph, const BodyMotion& body, bool leaning, BrickStabil
         .push_back(std::move(patch));
   graph->add(body.handle, body.com, body.mass, std::move(stability.supports),
              std::move(side_contacts), leaning);
+  graph->find(body.handle)->stability.external_loads = std::move(stability.external_loads);
   for (SupportPatch& patch : carried) graph->addCarried(body.handle, std::move(patch));
 }
 
@@ -50,14 +86,44 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
                    decisions);
   }
   for (const RestingPlacement& placed : input.placed) placeAtRest(placed, decisions);
+  if (input.dt > 0.0 && input.contacts) measureLoads(input);
   advanceMovers(input, decisions);
+  applyLoads();
   settle(&graph_, &rest_, decisions);
+}
+
+void StackStabilityModel::measureLoads(const StabilityInput& input) {
+  resting_.clear();
+  for (const BodyMotion& body : input.movers)
+    if (rest_.atRest(body)) resting_.push_back(body.handle);
+  std::sort(resting_.begin(), resting_.end());
+  const int window = static_cast<int>(std::lround(options_.rest_time / input.dt));
+  loads_.record(
+      *input.contacts, input.dt, window, StaticsOptions().gravity / input.gravity,
+      [&](BodyHandle brick) {
+        return graph_.contains(brick) || std::binary_search(resting_.begin(), resting_.end(), brick);
+      },
+      [&](BodyHandle body) { return !graph_.canSupport(body); });
+}
+
+void StackStabilityModel::applyLoads() {
+  for (BodyHandle brick : loads_.takeTouched()) {
+    SupportGraph::Node* node = graph_.find(brick);
+    if (!node) continue;
+    std::vector<PointForce> loads = loads_.on(brick);
+    if (!loadsDiffer(node->stability.external_loads, loads, node->com,
+                     node->mass * StaticsOptions().gravity))
+      continue;
+    node->stability.external_loads = std::move(loads);
+    graph_.touch(brick);
+  }
 }
 
 void StackStabilityModel::forget(BodyHandle brick, const char* what_happened,
                                  StabilityDecisions* decisions) {
   rest_.erase(brick);
   unjudged_.erase(brick);
+  loads_.forget(brick);
   for (BodyHandle upper : graph_.erase(brick)) {
     wakeWithLoad(WakeDecision{upper, WakeCause::kSupporterRemoved, brick, 0.0,
                               "its supporter " + name_of_(brick) + " was " + what_happened},
@@ -151,6 +217,11 @@ std::vector<BodyHandle> StackStabilityModel::carriedBy(BodyHandle brick) const {
 bool StackStabilityModel::evaluateMover(const BodyMotion& body,
                                         const std::vector<const PairContact*>& contacts,
                                         BrickStability* stability, FreezeDecision* decision) const {
+  // A brick at rest on it is judged next, from the bottom up, and its
+  // weight then passes through the stack; one that moves presses now.
+  stability->external_loads = loads_.on(body.handle, [this](BodyHandle source) {
+    return !std::binary_search(resting_.begin(), resting_.end(), source);
+  });
   stability->supports =
       supportPatches(body, contacts, frozenOrGround(graph_), options_,
                      criterion_->usesSideContacts() ? &stability->side_contacts : nullptr);
@@ -232,10 +303,21 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
     froze = false;
     for (const BodyMotion*& body : resting) {
       if (!body) continue;
-      BrickStability& stability = rest_.record(body->handle).stability;
+      RestTracker::Mover& mover = rest_.record(body->handle);
+      BrickStability& stability = mover.stability;
       FreezeDecision decision;
-      if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) continue;
+      if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) {
+        continue;
+      }
+      const bool in_place = mover.woken && (body->com - mover.woken_at).norm() < kMovedAway;
+      if (in_place && !standsWithMargin(*body, stability, decision)) {
+        // Where statics woke it, it waits for what changed to show: another
+        // rest window, then statics is asked again.
+        mover.rest_time = 0.0;
+        continue;
+      }
       freeze(*body, std::move(decision), stability, decisions);
+      if (in_place) graph_.find(body->handle)->refrozen_in_place = true;
       body = nullptr;
       froze = true;
     }
@@ -246,17 +328,44 @@ void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision
                                  BrickStability stability, StabilityDecisions* decisions) {
   join(&graph_, body, decision.kind == BrickState::kLeaning, std::move(stability), options_);
   rest_.erase(body.handle);
+  // Its weight now passes through the stack, not through the engine.
+  loads_.forgetSource(body.handle);
   decisions->freeze.push_back(std::move(decision));
+}
+
+bool StackStabilityModel::standsWithMargin(const BodyMotion& body, const BrickStability& stability,
+                                           const FreezeDecision& decision) const {
+  // Exact statics in every mode: the COM rule may pass what statics woke.
+  SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
+  join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
+  const StaticsSolution solution =
+      assembleStatics(what_if, what_if.bricks(), options_, kRefreezeLoadFactor).solve();
+  return solution.solved && solution.feasible;
+}
+
+StabilityDecisions StackStabilityModel::joiningWakes(const BodyMotion& body,
+                                                     const BrickStability& stability,
+                                                     const FreezeDecision& decision) const {
+  SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
+  join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
+  StabilityDecisions consequences;
+  settle(&what_if, nullptr, &consequences);
+  return consequences;
 }
 
 void StackStabilityModel::wakeWithLoad(const WakeDecision& first, SupportGraph* graph,
                                        RestTracker* rest, StabilityDecisions* decisions) const {
+  // The model's own judgement, not a push, a blow or a removal from outside.
+  const bool judged = first.cause == WakeCause::kOutsideSupport ||
+                      first.cause == WakeCause::kSupportCycle || first.cause == WakeCause::kCarried;
   for (SupportGraph::Detached& detached : graph->detachWithLoad(first.brick)) {
     if (rest) {
       // Until its next step it carries only itself, where it was frozen.
       RestTracker::Mover& mover = rest->restart(detached.brick);
       mover.stability.com_above = detached.node.com;
       mover.stability.mass_above = detached.node.mass;
+      mover.woken = judged;
+      mover.woken_at = detached.node.com;
     }
     if (detached.brick == first.brick) {
       decisions->wake.push_back(first);
@@ -265,6 +374,10 @@ void StackStabilityModel::wakeWithLoad(const WakeDecision& first, SupportGraph* 
           WakeDecision{detached.brick, WakeCause::kCarried, detached.carried_by, 0.0,
                        "carried by " + name_of_(detached.carried_by) + ", which was woken"});
     }
+    WakeDecision& woken = decisions->wake.back();
+    woken.repeats = judged && detached.node.refrozen_in_place;
+    if (woken.repeats)
+      woken.reason += " (again, where it had frozen without moving: a wake/refreeze cycle)";
   }
 }
 
@@ -299,10 +412,7 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
     return result;
   }
   // Its load on the stack below, judged on a copy of the components it joins.
-  SupportGraph what_if = graph_.componentsOf(result.supporters);
-  join(&what_if, brick, decision.kind == BrickState::kLeaning, stability, options_);
-  StabilityDecisions consequences;
-  settle(&what_if, nullptr, &consequences);
+  const StabilityDecisions consequences = joiningWakes(brick, stability, decision);
   for (const WakeDecision& woken : consequences.wake)
     if (woken.brick != brick.handle) result.would_fall.push_back(woken.brick);
   std::sort(result.would_fall.begin(), result.would_fall.end());

@@ -3,6 +3,7 @@
 #include <map>
 #include <memory>
 
+#include "stability/contact_loads.h"
 #include "stability/rest_tracker.h"
 #include "stability/stability_criterion.h"
 #include "stability/stability_model.h"
@@ -47,6 +48,12 @@ class StackStabilityModel : public StabilityModel {
   /// The bricks placed at rest, not yet admitted, that `newest` reaches
   /// through contacts among them: admitted together when the criterion says so.
   void admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions);
+  /// The step's contacts: what movers and held bricks press on the frozen
+  /// bricks and on the movers at rest.
+  void measureLoads(const StabilityInput& input);
+  /// Frozen bricks whose measured loads changed take them into their
+  /// statics: their components are judged again.
+  void applyLoads();
   /// The step's movers: rest times, candidate supports, and freezing from the
   /// bottom up (a brick at rest on one that freezes now may freeze too).
   void advanceMovers(const StabilityInput& input, StabilityDecisions* decisions);
@@ -56,6 +63,16 @@ class StackStabilityModel : public StabilityModel {
                      BrickStability* stability, FreezeDecision* decision) const;
   void freeze(const BodyMotion& body, FreezeDecision decision, BrickStability stability,
               StabilityDecisions* decisions);
+  /// What would wake if `body`, admitted as `decision` on `stability`,
+  /// joined the stack: judged on a copy of the components it would join.
+  /// Nothing changes.
+  StabilityDecisions joiningWakes(const BodyMotion& body, const BrickStability& stability,
+                                  const FreezeDecision& decision) const;
+  /// Whether `body` may freeze again where the model woke it: rigid-block
+  /// statics of the component it would join, with it, holds with every
+  /// measured load a margin larger.
+  bool standsWithMargin(const BodyMotion& body, const BrickStability& stability,
+                        const FreezeDecision& decision) const;
   /// Wakes `first.brick` and everything it carries; `rest` (when given)
   /// starts each over as a mover.
   void wakeWithLoad(const WakeDecision& first, SupportGraph* graph, RestTracker* rest,
@@ -68,6 +85,9 @@ class StackStabilityModel : public StabilityModel {
   std::unique_ptr<StabilityCriterion> criterion_;
   SupportGraph graph_;
   RestTracker rest_;
+  ContactLoads loads_;
+  /// The movers at rest in the last step measured, in handle order.
+  std::vector<BodyHandle> resting_;
   /// Bricks placed at rest since the last step that did not join alone.
   std::map<BodyHandle, RestingPlacement> unjudged_;
 };

@@ -83,6 +83,23 @@ std::vector<std::vector<ContactForce>> StaticsAssembly::contactForces(
   return forces;
 }
 
+StaticsAssembly assembleStatics(const SupportGraph& graph, const std::vector<BodyHandle>& bricks,
+                                const StabilityOptions& options, double load_factor) {
+  StaticsAssembly assembly(options);
+  for (BodyHandle handle : bricks) {
+    const SupportGraph::Node& node = *graph.find(handle);
+    assembly.addFree(handle, node.mass, node.com);
+  }
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    const SupportGraph::Node& node = *graph.find(bricks[i]);
+    assembly.addPatches(static_cast<int>(i), node.supports);
+    assembly.addPatches(static_cast<int>(i), node.side_contacts);
+    for (const PointForce& load : node.stability.external_loads)
+      assembly.addLoad(static_cast<int>(i), PointForce{load_factor * load.force, load.point});
+  }
+  return assembly;
+}
+
 StaticsSolution StaticsAssembly::solve(StaticsBasis* basis) const {
   // Whether forces balance does not depend on g's size: the default is the
   // unit every load passed between bricks is measured in.

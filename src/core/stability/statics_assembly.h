@@ -5,6 +5,7 @@
 
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_model.h"
+#include "stability/support_graph.h"
 
 namespace brick_stack_sim {
 
@@ -56,5 +57,10 @@ class StaticsAssembly {
   std::vector<BodyHandle> others_;
   std::vector<std::uint64_t> contact_keys_;  ///< From the two handles and the point's index.
 };
+
+/// The statics of `bricks` of `graph`, free, on their patches, with their
+/// measured external loads times `load_factor`; every other body fixed.
+StaticsAssembly assembleStatics(const SupportGraph& graph, const std::vector<BodyHandle>& bricks,
+                                const StabilityOptions& options, double load_factor = 1.0);
 
 }  // namespace brick_stack_sim

@@ -297,6 +297,13 @@ std::vector<std::vector<BodyHandle>> SupportGraph::loadOrder(
   return order;
 }
 
+std::vector<BodyHandle> SupportGraph::bricks() const {
+  std::vector<BodyHandle> handles;
+  handles.reserve(nodes_.size());
+  for (const auto& entry : nodes_) handles.push_back(entry.first);
+  return handles;
+}
+
 SupportGraph SupportGraph::componentsOf(const std::vector<BodyHandle>& seeds) const {
   SupportGraph copy;
   std::set<BodyHandle> seen;

@@ -39,6 +39,9 @@ class SupportGraph {
     std::vector<PointForce> pushes;
     /// Frozen as leaning: its load passes through its side contacts too.
     bool leaning = false;
+    /// It froze again where the model had woken it, without having moved:
+    /// if the model wakes it again, that is a wake/refreeze cycle.
+    bool refrozen_in_place = false;
     BrickStability stability;
   };
 
@@ -58,6 +61,8 @@ class SupportGraph {
   /// Frozen, or the table or floor: what a brick may rest on to join the stack.
   bool canSupport(BodyHandle handle) const { return isGround(handle) || contains(handle); }
   std::size_t size() const { return nodes_.size(); }
+  /// Every frozen brick, in handle order.
+  std::vector<BodyHandle> bricks() const;
 
   /// `brick` joins, linked under its frozen supporters and beside what its
   /// side contacts touch (both ways: bricks of a group frozen together list
@@ -86,6 +91,12 @@ class SupportGraph {
   /// it): what it carried or what leaned on it stays, forgets its contacts
   /// with it and is dirty. Returns those bricks.
   std::set<BodyHandle> eraseAndUnlink(BodyHandle brick);
+
+  /// Something outside the graph changed what `brick` bears (a load from
+  /// a body the stack does not hold): its component is judged again.
+  void touch(BodyHandle brick) {
+    if (contains(brick)) dirty_.insert(brick);
+  }
 
   bool hasChanges() const { return !dirty_.empty(); }
   /// The components holding a brick that changed since the last call, each

@@ -82,8 +82,10 @@ void advanceBullet(WorldState* w, const StepContext& step) {
 }
 
 /// Stage 2: the touching pairs, with flush faces refined into their exact
-/// overlap. Only a brick at rest can join the stack: while every mover is
-/// faster than the rest speeds (a pile in the air), nothing is read.
+/// overlap. Only a brick at rest can join the stack, and only a frozen
+/// brick in Bullet's world can bear a mover's load: while every mover is
+/// faster than the rest speeds and far from the stack (a pile in the air),
+/// nothing is read.
 void readStepContacts(WorldState* w) {
   const StabilityOptions& rest = w->options.stability;
   const bool any_resting =
@@ -91,12 +93,13 @@ void readStepContacts(WorldState* w) {
         return w->scene.linearSpeed(b->handle) < rest.rest_linear_speed &&
                w->scene.angularSpeed(b->handle) < rest.rest_angular_speed;
       });
-  if (!any_resting) {
+  if (!any_resting && w->dormant.inWorld().empty() && w->presses.empty()) {
     w->contacts.clear();
     return;
   }
   readContacts(w->scene, rest.contact_distance, &w->contacts);
   refineFlushPatches([w](BodyHandle handle) { return w->boxOf(handle); }, rest, &w->contacts);
+  w->contacts.insert(w->contacts.end(), w->presses.begin(), w->presses.end());
 }
 
 /// Stages 3 to 5: the model updates its support graph from the movers and
@@ -105,6 +108,7 @@ void readStepContacts(WorldState* w) {
 void runStabilityModel(WorldState* w) {
   StabilityInput input;
   input.dt = w->options.time_step;
+  input.gravity = w->options.gravity;
   input.contacts = &w->contacts;
   input.movers.reserve(w->sets.movers().size());
   for (const BrickRecord* brick : w->sets.movers()) input.movers.push_back(w->motionOf(*brick));
@@ -140,6 +144,7 @@ void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
     if (!brick) continue;
     w->sets.transfer(brick, BrickMode::kDynamic);
     brick->changed_at = w->revision;
+    if (d.repeats) ++w->cost.wake_cycles;
     w->emit(SimEventKind::kWoken, brick->id, d.reason);
   }
 }

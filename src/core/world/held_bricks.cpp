@@ -6,6 +6,7 @@
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "world/impacts.h"
+#include "world/placement_check.h"
 #include "world/world_state.h"
 
 namespace brick_stack_sim {
@@ -42,10 +43,18 @@ HandStep stepToward(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to, 
   return step;
 }
 
+/// A frozen brick that stopped the hand, and the normal of the face it
+/// stopped it at (unit, from the brick towards the hand).
+struct Stop {
+  BodyHandle brick = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
 /// Pushes `pose` of the held brick out of the frozen bricks in `blocking`,
-/// the table and the floor.
+/// the table and the floor; `stops` receives the frozen bricks it was
+/// pushed out of.
 void pushOut(const WorldState& w, const BrickRecord& held, const std::vector<BodyHandle>& blocking,
-             Eigen::Isometry3d* pose) {
+             Eigen::Isometry3d* pose, std::vector<Stop>* stops) {
   for (int round = 0; round < kBlockingRounds; ++round) {
     bool moved = false;
     std::vector<BodyHandle> obstacles = blocking;
@@ -58,6 +67,9 @@ void pushOut(const WorldState& w, const BrickRecord& held, const std::vector<Bod
         continue;
       pose->translation() -= nearest.distance * nearest.normal;
       moved = true;
+      const bool known = std::any_of(stops->begin(), stops->end(),
+                                     [&](const Stop& stop) { return stop.brick == obstacle; });
+      if (!isGround(obstacle) && !known) stops->push_back(Stop{obstacle, nearest.normal});
     }
     // The floor is a plane: nothing may sink below it.
     const double lowest = bounds(OrientedBox{*pose, held.type.halfExtents()}).min().z();
@@ -70,9 +82,44 @@ void pushOut(const WorldState& w, const BrickRecord& held, const std::vector<Bod
   }
 }
 
+/// The hand is a spring to its target: stopped short of it by a frozen
+/// brick, it presses on that brick with the held options' stiffness times
+/// how far the target lies beyond, along the face's normal, at most their
+/// largest force, spread over the face where they touch. The press is
+/// added to `presses` as the contact a solver would have applied, so that
+/// the stability model measures it like any other load.
+void pressOn(const WorldState& w, const BrickRecord& held, const Eigen::Isometry3d& pose,
+             const Stop& stop, std::vector<PairContact>* presses) {
+  const HeldOptions& hand = w.options.held;
+  const double beyond = (pose.translation() - held.held_target.translation()).dot(stop.normal);
+  const double force = std::min(hand.stiffness * beyond, hand.max_force);
+  if (!(force > 0.0)) return;
+  std::vector<PairContact> touching;
+  appendContacts(w, held.handle, held.type.friction, OrientedBox{pose, held.type.halfExtents()},
+                 stop.brick, true, &touching);
+  std::vector<Eigen::Vector3d> points;
+  for (const PairContact& contact : touching)
+    points.insert(points.end(), contact.points.begin(), contact.points.end());
+  if (points.empty()) {
+    ClosestPoints nearest;
+    if (!w.scene.closestPoints(held.handle, pose, stop.brick, &nearest)) return;
+    points.push_back(nearest.on_b);
+  }
+  PairContact press;
+  press.a = held.handle;
+  press.b = stop.brick;
+  press.normal = stop.normal;
+  press.points = points;
+  const double impulse = force * w.options.time_step / static_cast<double>(points.size());
+  for (const Eigen::Vector3d& point : points)
+    press.manifold.push_back(ContactPoint{point, stop.normal, 0.0, impulse, {}});
+  presses->push_back(std::move(press));
+}
+
 }  // namespace
 
 void moveHeldBricks(WorldState* w) {
+  w->presses.clear();
   const double dt = w->options.time_step;
   const HeldOptions& limits = w->options.held;
   // A copy: an impact may change the sets.
@@ -104,8 +151,11 @@ void moveHeldBricks(WorldState* w) {
       }
     }
     carryOutImpacts(w, impacts, &overlaps);
-    // What stays frozen where the hand would be stops it there.
-    pushOut(*w, *brick, near, &to);
+    // What stays frozen where the hand would be stops it there, and bears
+    // the hand's press.
+    std::vector<Stop> stops;
+    pushOut(*w, *brick, near, &to, &stops);
+    for (const Stop& stop : stops) pressOn(*w, *brick, to, stop, &w->presses);
     w->scene.moveKinematic(brick->handle, to);
     brick->last_good_pose = to;
   }

@@ -34,6 +34,10 @@ Status validate(const HeldOptions& h) {
     return bad("max_linear_speed", h.max_linear_speed, "must be in (0, 10] m/s");
   if (!positive(h.max_angular_speed) || h.max_angular_speed > 100.0)
     return bad("max_angular_speed", h.max_angular_speed, "must be in (0, 100] rad/s");
+  if (!nonNegative(h.stiffness) || h.stiffness > 1e4)
+    return bad("stiffness", h.stiffness, "must be in [0, 10000] N/m");
+  if (!nonNegative(h.max_force) || h.max_force > 1e3)
+    return bad("max_force", h.max_force, "must be in [0, 1000] N");
   return Status::success();
 }
 
@@ -121,6 +125,8 @@ Status readHeldOptions(OptionsReader& reader, HeldOptions* options) {
   return readAndValidate(reader, true, options, [&reader](HeldOptions& held) {
     reader.read("max_linear_speed", &held.max_linear_speed);
     reader.read("max_angular_speed", &held.max_angular_speed);
+    reader.read("stiffness", &held.stiffness);
+    reader.read("max_force", &held.max_force);
   });
 }
 

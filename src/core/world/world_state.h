@@ -50,6 +50,10 @@ struct WorldState {
   BrickRegistry bricks;
   std::unique_ptr<StabilityModel> model;  ///< Null in mode none.
   std::vector<PairContact> contacts;      ///< Of the last Bullet step.
+  /// What held bricks press on the frozen bricks that stop them this step,
+  /// as contacts (world/held_bricks): Bullet has no contact between a
+  /// kinematic and a static body.
+  std::vector<PairContact> presses;
   /// The model has something new to look at without a Bullet step: a brick
   /// placed, removed, frozen or woken.
   bool model_changed = false;

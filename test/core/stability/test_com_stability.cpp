@@ -154,8 +154,17 @@ TEST(ComStability, SlantTowerCollapsesExactlyAtTheStaticsLayer) {
     }
     const RunReport after = runScene(yaml.str(), collapse + 3.0);
     ASSERT_EQ(after.bricks.size(), static_cast<std::size_t>(collapse));
-    // The bottom brick stays; every brick above it goes.
-    EXPECT_LT(after.bricks[0].displacement, 1e-5) << offset;
+    // The bottom brick is not in the collapse: it is not woken when the
+    // tower fails. Then the falling bricks may shove it (plain Bullet at
+    // 1/4000 s and 100 iterations moves it some millimetres too), but it
+    // stays on the table and flat. Every brick above it goes.
+    EXPECT_EQ(after.cost.wake_cycles, 0u) << offset;
+    const double collapse_time = collapse - 1.0;  // the deciding brick's placement
+    for (const SimEvent& e : after.events)
+      if (e.kind == SimEventKind::kWoken && e.time < collapse_time + 0.1)
+        EXPECT_NE(e.brick_id, "b0") << offset << " at " << e.time << ": " << e.reason;
+    EXPECT_LT(after.bricks[0].displacement, 0.03) << offset;
+    EXPECT_LT(after.bricks[0].rotation, 0.05) << offset;
     for (std::size_t i = 1; i < after.bricks.size(); ++i) {
       const BrickOutcome& b = after.bricks[i];
       EXPECT_TRUE(b.displacement > 0.005 || b.rotation > 0.1)

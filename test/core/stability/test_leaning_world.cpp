@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -354,7 +355,9 @@ TEST(EquilibriumWake, ATowerPastItsCollapseLayerWakesFromTheFailingBrickOnce) {
   // layers 1..8 tip about b0's edge as one, and no smaller set must move
   // (the COM of 2..8 sits 56 mm past b1's centre, inside). Statics' least
   // imbalance is the same couple on any of them: waking only the top brick,
-  // which stands on the one under it, would freeze it again for ever.
+  // which stands on the one under it, would freeze it again for ever. The
+  // mechanism wakes at once; b0 is not in it (the falling bricks may shove
+  // it later, as they do in plain Bullet at 1/4000 s and 100 iterations).
   auto world = test::worldWithFriction("equilibrium", 0.5);
   SlantTowerParams params;
   params.layers = 9;
@@ -372,12 +375,19 @@ TEST(EquilibriumWake, ATowerPastItsCollapseLayerWakesFromTheFailingBrickOnce) {
     events.insert(events.end(), now.begin(), now.end());
   }
   std::map<std::string, int> wakes;
-  for (const SimEvent& e : events)
-    if (e.kind == SimEventKind::kWoken) ++wakes[e.brick_id];
-  EXPECT_EQ(wakes.size(), 8u);  // b1 .. b8
-  EXPECT_EQ(wakes.count("b0"), 0u);
-  for (const auto& [id, count] : wakes) EXPECT_EQ(count, 1) << id << " woken more than once";
-  EXPECT_EQ(test::snapshotOf(*world, "b0").state, BrickState::kStable);
+  std::set<std::string> at_collapse;
+  double collapse_time = -1.0;
+  for (const SimEvent& e : events) {
+    if (e.kind != SimEventKind::kWoken) continue;
+    ++wakes[e.brick_id];
+    if (collapse_time < 0.0) collapse_time = e.time;
+    if (e.time == collapse_time) at_collapse.insert(e.brick_id);
+  }
+  EXPECT_EQ(at_collapse, (std::set<std::string>{"b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8"}));
+  for (const auto& [id, count] : wakes)
+    if (id != "b0") EXPECT_EQ(count, 1) << id << " woken more than once";
+  EXPECT_EQ(world->cost().wake_cycles, 0u);
+  EXPECT_LT(displacement(*world, "b0"), 0.03);
   EXPECT_GT(displacement(*world, "b8"), 0.02);  // it fell
 }
 

@@ -62,6 +62,8 @@ TEST(RunCommandLine, DefaultModeIsTheNodesAndTheConfigFilesSayNothingElse) {
   EXPECT_EQ(a.fall_off_depth, b.fall_off_depth);
   EXPECT_EQ(a.max_linear_speed, b.max_linear_speed);
   EXPECT_EQ(a.max_angular_speed, b.max_angular_speed);
+  EXPECT_EQ(a.held.stiffness, b.held.stiffness);
+  EXPECT_EQ(a.held.max_force, b.held.max_force);
   EXPECT_EQ(a.table.size, b.table.size);
   EXPECT_EQ(a.table.thickness, b.table.thickness);
   EXPECT_EQ(a.table.height, b.table.height);

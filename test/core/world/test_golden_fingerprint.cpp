@@ -156,17 +156,20 @@ const Expected kExpected[] = {
     {"pile", "none", 0xf8b0a963969f3642ULL},
     // Issue 8: com freezes bricks that lean on others in the pile when
     // statics balances them, as equilibrium does, so the pile now ends as there.
-    {"pile", "com", 0x2347929e26845baaULL},
+    // Loads that movers put on frozen bricks enter their statics, and a
+    // failing stack wakes as its whole collapse mechanism (the slant tower
+    // now wakes in both modes as one, so they end alike).
+    {"pile", "com", 0xabd44029874ec6a9ULL},
     {"slant_tower", "none", 0xd505bbb3036cc0c3ULL},
-    {"slant_tower", "com", 0xff798dc608735d2aULL},
+    {"slant_tower", "com", 0x1659017e67073066ULL},
     {"remove_and_push", "none", 0xf6bc43f641e5d6e3ULL},
     {"remove_and_push", "com", 0xde19cc99c00434ddULL},
     // Mode equilibrium (issue 8): a flat stack that the COM rule finds
     // stable is an equilibrium, so the built tower and the removal scene
     // end as in com.
     {"built_tower", "equilibrium", 0x7a00383680c6e0c3ULL},
-    {"pile", "equilibrium", 0x2347929e26845baaULL},
-    {"slant_tower", "equilibrium", 0xff798dc608735d2aULL},
+    {"pile", "equilibrium", 0xabd44029874ec6a9ULL},
+    {"slant_tower", "equilibrium", 0x1659017e67073066ULL},
     {"remove_and_push", "equilibrium", 0xde19cc99c00434ddULL},
 };
 

@@ -21,6 +21,10 @@ Polygon2d convexHull(std::vector<Eigen::Vector2d> points, double merge_distance 
 /// resting on a point or an edge is never called stable.
 double signedDistance(const Polygon2d& hull, const Eigen::Vector2d& point);
 
+/// `point` when it lies in `hull`, else the point of `hull` nearest to it
+/// (on its boundary); `point` for an empty hull.
+Eigen::Vector2d nearestPoint(const Polygon2d& hull, const Eigen::Vector2d& point);
+
 /// Whether `point` lies inside `hull` or within `tolerance` [m] of it.
 bool contains(const Polygon2d& hull, const Eigen::Vector2d& point, double tolerance = 0.0);
 

@@ -22,6 +22,9 @@ struct CostCounters {
   std::uint64_t awake_brick_steps = 0;  ///< Sum over Bullet steps of bricks awake in it.
   std::uint64_t nonfinite = 0;          ///< NaN/Inf values caught and repaired.
   std::uint64_t blowups = 0;            ///< Runaway speeds (diverged solver) caught and repaired.
+  /// Bricks the model woke again after they froze where it had woken them,
+  /// without moving: a wake/refreeze cycle (must be 0).
+  std::uint64_t wake_cycles = 0;
   std::uint64_t lost = 0;               ///< Bricks that left the world box and were removed.
   std::uint64_t stability_updates = 0;  ///< Steps in which the stability model ran.
   // Wall time per stage of step() [s], for the benchmark's cost shares.

@@ -36,6 +36,11 @@ struct SleepingOptions {
 struct HeldOptions {
   double max_linear_speed = 0.5;   ///< [m/s]
   double max_angular_speed = 3.0;  ///< [rad/s]
+  /// The hand is a spring to its target: stopped by a frozen brick short of
+  /// a target beyond it, it presses on that brick with this times how far
+  /// the target lies beyond [N/m]. 0: it only stops there.
+  double stiffness = 50.0;
+  double max_force = 5.0;  ///< The most it presses with [N].
 };
 
 /// The box a brick's centre must stay in (parameters `bounds/...`), centred
