@@ -8,10 +8,12 @@
 #include <vector>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 
+
+#include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"
+#include "bullet/time_of_impact.h"
 
 namespace brick_stack_sim {
 
@@ -78,8 +80,8 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
                                           box_box_algorithm.get());
   broadphase = std::make_unique<btDbvtBroadphase>();
   solver = std::make_unique<btSequentialImpulseConstraintSolver>();
-  world = std::make_unique<btDiscreteDynamicsWorld>(dispatcher.get(), broadphase.get(),
-                                                    solver.get(), collision_configuration.get());
+  world = std::make_unique<BrickDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(),
+                                               collision_configuration.get());
   world->setGravity(btVector3(0, 0, -options.gravity));
   // Bodies at rest keep their AABB; recomputing every static brick's box each
   // step dominated the cost of large settled scenes.
@@ -160,10 +162,12 @@ void BulletScene::addBrick(BodyHandle handle, const BrickType& type,
   auto body = std::make_unique<btRigidBody>(info);
   body->setLinearVelocity(convertEigenToBt(placement.linear_velocity));
   body->setAngularVelocity(convertEigenToBt(placement.angular_velocity));
-  // A brick moving more than its half thickness in one step could pass through
-  // a thin neighbour; continuous collision catches that case only.
+  // Moving more than a quarter of its thickness in one step, a brick could
+  // sink so far into a thin one before the next step's contact that the
+  // shallowest way out is through it: it sweeps its own shape along the
+  // step instead (BrickDynamicsWorld). Bullet's swept sphere is not used.
   const double thinnest_half = type.halfExtents().minCoeff();
-  body->setCcdMotionThreshold(thinnest_half);
+  body->setCcdMotionThreshold(0.5 * thinnest_half);
   body->setCcdSweptSphereRadius(0.5 * thinnest_half);
   if (!impl_->options.sleeping.enabled) body->setActivationState(DISABLE_DEACTIVATION);
   body->setUserIndex(static_cast<int>(handle));
@@ -314,21 +318,32 @@ bool BulletScene::closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, B
   const btRigidBody* body_a = impl_->bodyOrTable(a);
   const btRigidBody* body_b = impl_->bodyOrTable(b);
   if (!body_a || !body_b) return false;
-  const auto* shape_a = static_cast<const btConvexShape*>(body_a->getCollisionShape());
-  const auto* shape_b = static_cast<const btConvexShape*>(body_b->getCollisionShape());
-  const btTransform transform_a = convertEigenToBt(pose_a);
-  const btTransform& transform_b = body_b->getWorldTransform();
-  btGjkEpaSolver2::sResults result;
-  if (!btGjkEpaSolver2::SignedDistance(shape_a, transform_a, shape_b, transform_b,
-                                       transform_b.getOrigin() - transform_a.getOrigin(), result))
+  SurfaceGap gap;
+  if (!surfaceGap(*static_cast<const btConvexShape*>(body_a->getCollisionShape()),
+                  convertEigenToBt(pose_a),
+                  *static_cast<const btConvexShape*>(body_b->getCollisionShape()),
+                  body_b->getWorldTransform(), &gap))
     return false;
-  // GJK measures the shapes shrunk by their margins (btBoxShape keeps its
-  // outer size and puts the margin inside): the surfaces lie a margin out.
-  // It works in a's frame: its normal (from b towards a) is a's local one.
-  points->normal = convertBtToEigen(transform_a.getBasis() * result.normal).normalized();
-  points->distance = result.distance - shape_a->getMargin() - shape_b->getMargin();
-  points->on_b = convertBtToEigen(result.witnesses[1]) + shape_b->getMargin() * points->normal;
-  return points->normal.allFinite() && std::isfinite(points->distance);
+  points->normal = convertBtToEigen(gap.normal);
+  points->distance = gap.distance;
+  points->on_b = convertBtToEigen(gap.on_b);
+  return points->normal.allFinite();
+}
+
+bool BulletScene::firstContact(BodyHandle a, const Eigen::Isometry3d& from,
+                               const Eigen::Isometry3d& to, BodyHandle b, double* fraction) const {
+  const btRigidBody* body_a = impl_->bodyOrTable(a);
+  const btRigidBody* body_b = impl_->bodyOrTable(b);
+  if (!body_a || !body_b) return false;
+  btScalar at = 1;
+  SurfaceGap gap;
+  if (!timeOfImpact(*static_cast<const btConvexShape*>(body_a->getCollisionShape()),
+                    convertEigenToBt(from), convertEigenToBt(to),
+                    *static_cast<const btConvexShape*>(body_b->getCollisionShape()),
+                    body_b->getWorldTransform(), kImpactTolerance, &at, &gap))
+    return false;
+  *fraction = at;
+  return true;
 }
 
 void BulletScene::step(double dt) {

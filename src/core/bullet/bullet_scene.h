@@ -102,6 +102,14 @@ class BulletScene {
   bool closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, BodyHandle b,
                      ClosestPoints* points) const;
 
+  /// How far along its way from `from` to `to` a brick `a` first touches
+  /// the brick or table `b` where it is (the fraction of the way, in a
+  /// straight line, its orientation `from`'s): continuous collision for a
+  /// check that looks only at where a fast brick ends a step. False when it
+  /// never touches it on the way, for the floor, or when the cast fails.
+  bool firstContact(BodyHandle a, const Eigen::Isometry3d& from, const Eigen::Isometry3d& to,
+                    BodyHandle b, double* fraction) const;
+
   /// An impulse [N s] at a world point [m].
   void applyImpulse(BodyHandle handle, const Eigen::Vector3d& impulse,
                     const Eigen::Vector3d& point);

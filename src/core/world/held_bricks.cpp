@@ -112,7 +112,8 @@ void pressOn(const WorldState& w, const BrickRecord& held, const Eigen::Isometry
   press.points = points;
   const double impulse = force * w.options.time_step / static_cast<double>(points.size());
   for (const Eigen::Vector3d& point : points)
-    press.manifold.push_back(ContactPoint{point, stop.normal, 0.0, impulse, {}});
+    press.manifold.push_back(
+        ContactPoint{point, stop.normal, 0.0, impulse, Eigen::Vector3d::Zero()});
   presses->push_back(std::move(press));
 }
 
@@ -134,8 +135,11 @@ void moveHeldBricks(WorldState* w) {
     if (!striker.spin.allFinite()) striker.spin.setZero();
 
     std::vector<BodyHandle> near;
+    const Eigen::Isometry3d from = w->scene.pose(brick->handle);
     if (w->model) {
-      const Eigen::AlignedBox3d reach = bounds(OrientedBox{to, brick->type.halfExtents()});
+      // All it passes on the way, not just where it ends.
+      Eigen::AlignedBox3d reach = bounds(OrientedBox{to, brick->type.halfExtents()});
+      reach.extend(bounds(OrientedBox{from, brick->type.halfExtents()}));
       const Eigen::Vector3d margin =
           Eigen::Vector3d::Constant(w->options.stability.contact_distance);
       near = w->dormant.near(reach.min() - margin, reach.max() + margin);
@@ -143,14 +147,25 @@ void moveHeldBricks(WorldState* w) {
     std::vector<Impact> impacts;
     std::vector<double> overlaps;
     for (BodyHandle frozen : near) {
+      // A fast hand is judged where it first meets each brick on its way.
+      Striker at = striker;
+      at.pose = partWay(from, to, firstContactOnTheWay(*w, striker, from, frozen));
       Impact impact;
       double overlap = 0.0;
-      if (findImpact(*w, striker, frozen, &impact, &overlap)) {
+      if (findImpact(*w, at, frozen, &impact, &overlap)) {
         impacts.push_back(impact);
         overlaps.push_back(overlap);
       }
     }
     carryOutImpacts(w, impacts, &overlaps);
+    // What it meets on the way and stays frozen stops it there.
+    double stop = 1.0;
+    for (BodyHandle frozen : near) {
+      const BrickRecord* record = w->bricks.find(frozen);
+      if (record && isFrozen(record->mode))
+        stop = std::min(stop, firstContactOnTheWay(*w, striker, from, frozen));
+    }
+    if (stop < 1.0) to = partWay(from, to, stop);
     // What stays frozen where the hand would be stops it there, and bears
     // the hand's press.
     std::vector<Stop> stops;

@@ -31,6 +31,17 @@ struct Striker {
   double restitution = 0.0;                            ///< Of its material [-].
 };
 
+/// Where along its way from `from` to its end pose `striker` first touches
+/// `struck` (the fraction of the way, 1 when it does not touch it on the
+/// way). A striker that covers more than a quarter of its thickness in a
+/// step is swept (it could end the step beyond a thin brick it passed);
+/// a slower one is judged where it ends, as the discrete contact would.
+double firstContactOnTheWay(const WorldState& world, const Striker& striker,
+                            const Eigen::Isometry3d& from, BodyHandle struck);
+/// The pose a fraction `fraction` of the way from `from` to `to`.
+Eigen::Isometry3d partWay(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to,
+                          double fraction);
+
 /// Where `striker` meets the frozen brick `struck` within the coming step:
 /// false when it does not touch it at its end pose, closes slower than the
 /// stability's impact speed, or only grazes it along an edge. `overlap`

@@ -13,8 +13,9 @@ void guardMovers(WorldState* w) {
     const Eigen::Vector3d velocity = w->scene.linearVelocity(h);
     const Eigen::Vector3d spin = w->scene.angularVelocity(h);
     const bool finite = pose.matrix().allFinite() && velocity.allFinite() && spin.allFinite();
-    const bool runaway = finite && (velocity.norm() > w->options.max_linear_speed ||
-                                    spin.norm() > w->options.max_angular_speed);
+    const double blow_up = WorldOptions::kBlowUpFactor;
+    const bool runaway = finite && (velocity.norm() > blow_up * w->options.max_linear_speed ||
+                                    spin.norm() > blow_up * w->options.max_angular_speed);
     if (!finite || runaway) {
       const std::string reason = finite ? "numerical blow-up: " + std::to_string(velocity.norm()) +
                                               " m/s, " + std::to_string(spin.norm()) + " rad/s"

@@ -76,10 +76,12 @@ struct WorldOptions {
   double overlap_tolerance = 1e-4;
   /// A brick whose centre drops this far below the table top has fallen off [m].
   double fall_off_depth = 0.02;
-  /// Placement speeds above these are refused as unphysical, and a brick
-  /// Bullet drives faster is a diverged solver, repaired.
+  /// Placement and push speeds above these are refused as unphysical. A
+  /// brick Bullet drives kBlowUpFactor times faster is a diverged solver,
+  /// repaired: a brick thrown at the limit, spun by what it strikes, is not.
   double max_linear_speed = 50.0;    ///< [m/s]
   double max_angular_speed = 500.0;  ///< [rad/s]
+  static constexpr double kBlowUpFactor = 4.0;
 
   HeldOptions held;
   TableOptions table;

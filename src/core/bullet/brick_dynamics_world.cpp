@@ -1,0 +1,120 @@
+#include "bullet/brick_dynamics_world.h"
+
+#include <vector>
+
+#include "bullet/time_of_impact.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// Every body whose box overlaps the box it is given.
+struct Overlapping : public btBroadphaseAabbCallback {
+  std::vector<const btCollisionObject*> bodies;
+  bool process(const btBroadphaseProxy* proxy) override {
+    bodies.push_back(static_cast<const btCollisionObject*>(proxy->m_clientObject));
+    return true;
+  }
+};
+
+}  // namespace
+
+bool BrickDynamicsWorld::sweeps(const btRigidBody& body, const btTransform& predicted) {
+  const btScalar threshold = body.getCcdSquareMotionThreshold();
+  return threshold > 0 && body.getCollisionShape()->isConvex() &&
+         (predicted.getOrigin() - body.getWorldTransform().getOrigin()).length2() > threshold;
+}
+
+bool BrickDynamicsWorld::firstHit(btRigidBody* body, const btTransform& to, Hit* hit) const {
+  const btTransform& from = body->getWorldTransform();
+  const btVector3 motion = to.getOrigin() - from.getOrigin();
+  const auto& shape = *static_cast<const btConvexShape*>(body->getCollisionShape());
+  btVector3 low, high;
+  shape.getAabb(from, low, high);
+  btVector3 swept_low = low, swept_high = high;
+  swept_low.setMin(low + motion);
+  swept_high.setMax(high + motion);
+  Overlapping near;
+  m_broadphasePairCache->aabbTest(swept_low, swept_high, near);
+  // What it closes on by less than this in the step, the discrete contact
+  // handles (a brick sliding fast along the table) [m].
+  const btScalar least_approach = btScalar(0.5) * body->getCcdMotionThreshold();
+  const btBroadphaseProxy& own = *body->getBroadphaseHandle();
+  bool found = false;
+  for (const btCollisionObject* other : near.bodies) {
+    if (other == body || !other->hasContactResponse()) continue;
+    const btBroadphaseProxy& proxy = *other->getBroadphaseHandle();
+    if (!(proxy.m_collisionFilterGroup & own.m_collisionFilterMask) ||
+        !(own.m_collisionFilterGroup & proxy.m_collisionFilterMask) ||
+        !m_dispatcher1->needsCollision(body, other) || !m_dispatcher1->needsResponse(body, other))
+      continue;
+    btScalar fraction = 1;
+    SurfaceGap gap;
+    const btCollisionShape* other_shape = other->getCollisionShape();
+    bool meets = false;
+    if (other_shape->getShapeType() == STATIC_PLANE_PROXYTYPE) {
+      meets = timeOfImpactWithPlane(shape, from, to, *static_cast<const btStaticPlaneShape*>(other_shape),
+                                    other->getWorldTransform(), &fraction, &gap);
+    } else if (other_shape->isConvex()) {
+      meets = timeOfImpact(shape, from, to, *static_cast<const btConvexShape*>(other_shape),
+                           other->getWorldTransform(), kImpactTolerance, &fraction, &gap);
+    }
+    if (!meets || (found && !(fraction < hit->fraction)) ||
+        motion.dot(gap.normal) >= -least_approach)
+      continue;
+    *hit = Hit{other, fraction, gap.on_b, gap.normal};
+    found = true;
+  }
+  return found;
+}
+
+void BrickDynamicsWorld::createPredictiveContacts(btScalar time_step) {
+  releasePredictiveContacts();
+  for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+    btRigidBody* body = m_nonStaticRigidBodies[i];
+    body->setHitFraction(1);
+    if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
+    btTransform predicted;
+    body->predictIntegratedTransform(time_step, predicted);
+    Hit hit;
+    if (!sweeps(*body, predicted) || !firstHit(body, predicted, &hit)) continue;
+    // A contact the solver keeps it from closing by more than the gap:
+    // what it strikes takes the blow in this step, as on touching.
+    const btVector3 travel =
+        (predicted.getOrigin() - body->getWorldTransform().getOrigin()) * hit.fraction;
+    // Two faces meet all over their overlap, and the cast names one corner
+    // of it: the blow acts where the line through the centre of mass along
+    // the normal crosses the face, or a face-on hit would set it spinning.
+    const btVector3 centre = body->getCenterOfMassPosition() + travel;
+    const btVector3 on_other = centre - (centre - hit.point).dot(hit.normal) * hit.normal;
+    const btVector3 on_body = on_other - travel;  // the point that meets, where it is now
+    btPersistentManifold* manifold = m_dispatcher1->getNewManifold(body, hit.other);
+    m_predictiveManifolds.push_back(manifold);
+    btManifoldPoint point(body->getWorldTransform().invXform(on_body),
+                          hit.other->getWorldTransform().invXform(on_other), hit.normal,
+                          travel.dot(-hit.normal));
+    btManifoldPoint& added = manifold->getContactPoint(manifold->addManifoldPoint(point, true));
+    // No bounce before they touch: the contact of the next step bounces.
+    added.m_combinedRestitution = 0;
+    added.m_combinedFriction = gCalculateCombinedFrictionCallback(body, hit.other);
+    added.m_positionWorldOnA = on_body;
+    added.m_positionWorldOnB = on_other;
+  }
+}
+
+void BrickDynamicsWorld::integrateTransforms(btScalar time_step) {
+  for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+    btRigidBody* body = m_nonStaticRigidBodies[i];
+    body->setHitFraction(1);
+    if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
+    btTransform predicted;
+    body->predictIntegratedTransform(time_step, predicted);
+    // What the solver could not stop in time ends its step where it meets.
+    Hit hit;
+    if (sweeps(*body, predicted) && firstHit(body, predicted, &hit))
+      body->predictIntegratedTransform(time_step * hit.fraction, predicted);
+    body->proceedToTransform(predicted);
+  }
+}
+
+}  // namespace brick_stack_sim
