@@ -82,7 +82,8 @@ void faceToward(const OrientedBox& box, const Eigen::Vector3d& direction, Eigen:
 }  // namespace
 
 bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
-                       double max_gap, std::vector<Eigen::Vector3d>* patch) {
+                       double max_gap, std::vector<Eigen::Vector3d>* patch,
+                       Eigen::Vector3d* normal) {
   Eigen::Vector3d lower_normal, upper_normal;
   std::array<Eigen::Vector3d, 4> lower_face, upper_face;
   faceToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal, &lower_face);
@@ -109,6 +110,7 @@ bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, doubl
                                       lower_normal.z();
     patch->emplace_back(corner.x(), corner.y(), z);
   }
+  if (normal) *normal = lower_normal;
   return true;
 }
 

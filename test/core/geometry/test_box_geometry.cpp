@@ -108,6 +108,24 @@ TEST(FlushContactPatch, CrossedPlanksRestOnTheirSquareOverlap) {
   for (const Eigen::Vector3d& corner : patch) EXPECT_NEAR(corner.z(), 2 * kHalfThickness, 1e-12);
 }
 
+TEST(FlushContactPatch, OnAnInclinedPlankTheNormalIsItsFaces) {
+  // Both planks pitched by 35 degrees, the upper one lying flush on the
+  // lower's top face: the patch carries along that face's normal, which is
+  // 35 degrees from vertical (a brick placed there slides unless friction
+  // holds it, which a vertical normal would hide).
+  const Eigen::Matrix3d pitch =
+      Eigen::AngleAxisd(-35.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  OrientedBox lower = plank({0, 0, 0.05});
+  lower.pose.linear() = pitch;
+  OrientedBox upper = lower;
+  upper.pose.translation() += 2.0 * kHalfThickness * pitch.col(2) + 0.01 * pitch.col(0);
+  std::vector<Eigen::Vector3d> patch;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  ASSERT_TRUE(flushContactPatch(lower, upper, 0.002, 1e-4, &patch, &normal));
+  EXPECT_TRUE(normal.isApprox(pitch.col(2), 1e-12)) << normal.transpose();
+  EXPECT_NEAR(std::acos(normal.z()), 35.0 * M_PI / 180.0, 1e-12);
+}
+
 TEST(FlushContactPatch, TiltedGappedOrMisplacedFacesAreNoPatch) {
   std::vector<Eigen::Vector3d> patch;
   const OrientedBox lower = plank({0, 0, kHalfThickness});

@@ -37,10 +37,13 @@ double separation(const OrientedBox& a, const OrientedBox& b);
 /// and `upper` is the higher box, the overlap of the two faces seen from
 /// above, lifted onto the lower face. Bullet's box-box clipper keeps only
 /// penetrating points, so a brick tilted by a micro-radian reports half its
-/// patch; resting flush, the whole overlap carries. False when the faces are
-/// not flush, not in contact, or do not overlap.
+/// patch; resting flush, the whole overlap carries. `normal` (optional)
+/// receives the lower face's (unit, towards `upper`): on an inclined brick
+/// it is no longer vertical. False when the faces are not flush, not in
+/// contact, or do not overlap.
 bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
-                       double max_gap, std::vector<Eigen::Vector3d>* patch);
+                       double max_gap, std::vector<Eigen::Vector3d>* patch,
+                       Eigen::Vector3d* normal = nullptr);
 
 /// Whether `rotation` is a proper rotation (orthonormal, determinant +1) within `tolerance`.
 bool isRotation(const Eigen::Matrix3d& rotation, double tolerance = 1e-6);
