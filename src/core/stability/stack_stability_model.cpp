@@ -21,6 +21,13 @@ namespace {
 /// and a check per step for nothing would cost a tower its settled price.
 constexpr double kLoadChange = 0.01;
 constexpr double kLoadLever = 1e-3;  ///< [m]
+/// A brick moving across a frozen one changes its load a little every
+/// step; judging the component again each step costs a statics LP a step
+/// for a leaning one. A change is taken into its statics at most once in
+/// this many steps, unless it is this large (a brick landing, a hand
+/// pressing) or the load went.
+constexpr std::uint64_t kLoadRejudgeSteps = 10;
+constexpr double kLoadJump = 0.25;
 /// A brick the model woke has moved once its centre of mass is this far
 /// from where it was woken [m]: a brick held where it is moves a few
 /// micrometres, one that tipped or slid a visible distance.
@@ -42,12 +49,15 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> resultantOf(const std::vector<PointF
   return {force, moment};
 }
 
-bool loadsDiffer(const std::vector<PointForce>& before, const std::vector<PointForce>& now,
-                 const Eigen::Vector3d& com, double weight) {
+/// How much the loads on a brick changed: the larger of the change of
+/// their force over its weight and of their moment over its weight times
+/// kLoadLever [-].
+double loadChange(const std::vector<PointForce>& before, const std::vector<PointForce>& now,
+                  const Eigen::Vector3d& com, double weight) {
   const auto [force_before, moment_before] = resultantOf(before, com);
   const auto [force_now, moment_now] = resultantOf(now, com);
-  return (force_now - force_before).norm() > kLoadChange * weight ||
-         (moment_now - moment_before).norm() > kLoadChange * weight * kLoadLever;
+  return std::max((force_now - force_before).norm() / weight,
+                  (moment_now - moment_before).norm() / (weight * kLoadLever));
 }
 
 /// `body` joins `graph` on its supports and side contacts. A frozen brick
@@ -86,6 +96,7 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
                    decisions);
   }
   for (const RestingPlacement& placed : input.placed) placeAtRest(placed, decisions);
+  if (input.dt > 0.0) ++steps_;
   if (input.dt > 0.0 && input.contacts) measureLoads(input);
   advanceMovers(input, decisions);
   applyLoads();
@@ -109,11 +120,19 @@ void StackStabilityModel::measureLoads(const StabilityInput& input) {
 void StackStabilityModel::applyLoads() {
   for (BodyHandle brick : loads_.takeTouched()) {
     SupportGraph::Node* node = graph_.find(brick);
-    if (!node) continue;
-    std::vector<PointForce> loads = loads_.on(brick);
-    if (!loadsDiffer(node->stability.external_loads, loads, node->com,
-                     node->mass * StaticsOptions().gravity))
+    if (!node) {
+      loads_judged_at_.erase(brick);
       continue;
+    }
+    std::vector<PointForce> loads = loads_.on(brick);
+    const double change = loadChange(node->stability.external_loads, loads, node->com,
+                                     node->mass * StaticsOptions().gravity);
+    if (!(change > kLoadChange)) continue;
+    auto judged = loads_judged_at_.find(brick);
+    if (judged != loads_judged_at_.end() && steps_ < judged->second + kLoadRejudgeSteps &&
+        change < kLoadJump && !loads.empty())
+      continue;  // in a few steps; touched again while its load is measured
+    loads_judged_at_[brick] = steps_;
     node->stability.external_loads = std::move(loads);
     graph_.touch(brick);
   }

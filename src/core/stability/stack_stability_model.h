@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
+#include <unordered_map>
 
 #include "stability/contact_loads.h"
 #include "stability/rest_tracker.h"
@@ -88,6 +90,9 @@ class StackStabilityModel : public StabilityModel {
   ContactLoads loads_;
   /// The movers at rest in the last step measured, in handle order.
   std::vector<BodyHandle> resting_;
+  std::uint64_t steps_ = 0;  ///< Steps the model has seen.
+  /// When each frozen brick last took a changed load into its statics.
+  std::unordered_map<BodyHandle, std::uint64_t> loads_judged_at_;
   /// Bricks placed at rest since the last step that did not join alone.
   std::map<BodyHandle, RestingPlacement> unjudged_;
 };
