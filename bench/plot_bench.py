@@ -5,7 +5,9 @@ usage: plot_bench.py RESULTS.csv OUTPUT_DIR
 
 For each case: run time against error for every mode and setting (the Pareto
 picture); for the settled towers: cost against number of bricks. The targets
-of issue 4 are checked on ratios measured side by side in the same CSV.
+are checked on ratios measured side by side in the same CSV. The motions with
+an answer from mechanics get a table of their own (*_motion.md): measured,
+expected and error per mode, at the default setting.
 """
 import csv
 import math
@@ -37,6 +39,15 @@ ERROR_OF = {  # case kind -> (column, axis label)
     "threshold_error_pct": "harmonic threshold error [% of f]",
     "collapse_layer_error": "|collapse layer error| [layers]",
     "penetration_mm": "deepest penetration [mm]",
+    "motion_error_pct": "error against mechanics [%]",
+}
+# What each motion case measures, and the reference its error is against.
+MOTION_QUANTITY = {
+    "slide": ("stopping distance from 1 m/s [mm]", 1000.0, "v^2 / (2 mu g)"),
+    "incline": ("acceleration down 35 degrees [m/s^2]", 1.0, "g (sin a - mu cos a)"),
+    "topple": ("time to tip to 45 degrees [ms]", 1000.0, "rigid pendulum about the edge"),
+    "free_flight": ("height gained in 0.3 s [mm]", 1000.0, "v t - g t^2 / 2"),
+    "domino": ("toppling wave speed [m/s]", 1.0, "plain Bullet at 1/4000 s, 100 it."),
 }
 
 
@@ -46,11 +57,13 @@ def load(path):
     for r in rows:
         for key in ("time_step", "wall_ms_per_sim_s", "bricks", "iterations"):
             r[key] = float(r[key])
+        for key in ("motion_measured", "motion_expected", "motion_error_pct"):
+            r.setdefault(key, "")  # a CSV from before the motions
     return rows
 
 
 def error_column(rows):
-    for column in ("drift_mm", "threshold_error_pct", "collapse_layer_error"):
+    for column in ("drift_mm", "threshold_error_pct", "collapse_layer_error", "motion_error_pct"):
         if all(r[column] != "" for r in rows):
             return column
     return "penetration_mm"
@@ -150,12 +163,21 @@ def targets(rows):
             r = ratio(com["wall_ms_per_sim_s"], none["wall_ms_per_sim_s"])
             lines.append(f"| {case} drop: com <= 1.10x none | {r:.2f}x | "
                          f"{'yes' if r <= 1.10 else 'no'} |")
+    motions = [r for r in rows if r["motion_error_pct"] != "" and is_default(r)]
+    for mode in ("com", "equilibrium"):
+        closed = [r for r in motions if r["mode"] == mode and r["case"] != "domino"]
+        if closed:
+            worst = max(closed, key=lambda r: float(r["motion_error_pct"]))
+            lines.append(f"| motions with a closed form within 2 % ({mode}) | worst "
+                         f"{float(worst['motion_error_pct']):.2f} % ({worst['case']}) | "
+                         f"{'yes' if float(worst['motion_error_pct']) <= 2.0 else 'no'} |")
     for case in sorted({r["case"] for r in rows}):
         points = [r for r in rows if r["case"] == case]
         column = error_column(points)
         nones = [r for r in points if r["mode"].startswith("none")]
         coms = [r for r in points if r["mode"] == "com"]
-        if not nones or not coms or column == "penetration_mm":
+        # Motions measure accuracy: the layer has nothing to skip there.
+        if not nones or not coms or column in ("penetration_mm", "motion_error_pct"):
             continue
         beaten = sum(
             1 for n in nones
@@ -165,6 +187,30 @@ def targets(rows):
                      f"{len(nones)} none settings at equal or lower error | "
                      f"{'yes' if beaten == len(nones) else 'no'} |")
     return "\n".join(lines) + "\n"
+
+
+def motion_table(rows):
+    """Each motion at the default setting, every mode side by side."""
+    motions = [r for r in rows if r["motion_error_pct"] != "" and is_default(r)]
+    modes = [m for m in colours_for(motions) if any(r["mode"] == m for r in motions)]
+    header = "| motion | quantity | reference | " + " | ".join(
+        f"{m}: measured, error, ms per sim s" for m in modes) + " |"
+    lines = [header, "|" + "---|" * (3 + len(modes))]
+    for case, (quantity, scale, reference) in MOTION_QUANTITY.items():
+        by_mode = {r["mode"]: r for r in motions if r["case"] == case}
+        if not by_mode:
+            continue
+        expected = next(iter(by_mode.values()))["motion_expected"]
+        cells = [case, quantity, f"{reference}: {float(expected) * scale:.4g}"]
+        for m in modes:
+            r = by_mode.get(m)
+            if r is None or r["motion_measured"] == "":
+                cells.append("-")
+                continue
+            cells.append(f"{float(r['motion_measured']) * scale:.4g}, "
+                         f"{float(r['motion_error_pct']):.2f} %, {r['wall_ms_per_sim_s']:.3g}")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n" if len(lines) > 2 else ""
 
 
 def main():
@@ -181,6 +227,11 @@ def main():
     with open(os.path.join(out_dir, f"{stem}_targets.md"), "w") as f:
         f.write(table)
     print(table)
+    motions = motion_table(rows)
+    if motions:
+        with open(os.path.join(out_dir, f"{stem}_motion.md"), "w") as f:
+            f.write(motions)
+        print(motions)
 
 
 if __name__ == "__main__":

@@ -182,6 +182,47 @@ Status loadCaseScene(const std::string& name, const BenchContext& context, Scene
   return loadScene(name, context.scene_dirs, context.types, scene);
 }
 
+/// How long each motion runs: until it is over, or measured [s].
+double motionDuration(MotionCase motion) {
+  switch (motion) {
+    case MotionCase::kSlide: return 1.0;
+    case MotionCase::kIncline: return 0.3;
+    case MotionCase::kTopple: return 0.8;
+    case MotionCase::kFreeFlight: return 0.35;
+    case MotionCase::kDomino: return 2.0;
+  }
+  return 1.0;
+}
+
+/// The motions with answers from mechanics, each at `settings`.
+void addMotions(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
+  for (MotionCase motion : kMotionCases) {
+    plan->cases.push_back(makeCase(motionCaseName(motion), "", BenchMetric::kMotion,
+                                   motionDuration(motion), settings));
+    plan->cases.back().motion = motion;
+    plan->cases.back().repeats = 3;
+  }
+}
+
+/// The motion `c` measured in a run at `setting`; `run` receives the run
+/// (the fastest of the case's repeats).
+Status measureMotion(const BenchCase& c, const BenchSetting& setting, const BenchContext& context,
+                     double* measured, TimedRun* run) {
+  Scene scene;
+  if (Status made = motionScene(c.motion, context.types, &scene); !made) return made;
+  for (int repeat = 0; repeat < std::max(c.repeats, 1); ++repeat) {
+    MotionProbe probe(c.motion);
+    TimedRun attempt;
+    if (Status ran = timedRun(scene, context, optionsFor(setting, c.duration), 0.0, &attempt,
+                              [&probe](const BrickWorld& world) { probe.observe(world); });
+        !ran)
+      return ran;
+    if (repeat == 0 || attempt.step_wall_time < run->step_wall_time) *run = std::move(attempt);
+    *measured = probe.measured();
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 int slantTowerCollapseLayer(double offset, double length) {
@@ -207,6 +248,7 @@ BenchPlan quickBenchPlan() {
     plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));
     plan.cases.back().repeats = 5;
   }
+  addMotions(settingsFor(allModes(), {{1.0 / 1000, 20}}), &plan);
   return plan;
 }
 
@@ -243,6 +285,7 @@ BenchPlan fullBenchPlan() {
     plan.cases.push_back(makeCase(scene, scene, BenchMetric::kDrop, 0.3, model_only));
     plan.cases.back().repeats = 5;
   }
+  addMotions(sweep, &plan);
   return plan;
 }
 
@@ -349,6 +392,42 @@ Status runBenchCase(const BenchCase& c, const BenchSetting& setting, const Bench
           collapse_layer > 0 ? collapse_layer - statics : params.layers + 1 - statics;
       return Status::success();
     }
+    case BenchMetric::kMotion: {
+      TimedRun run;
+      double measured = 0.0;
+      if (Status ran = measureMotion(c, setting, context, &measured, &run); !ran) return ran;
+      row->scene = motionCaseName(c.motion);
+      accumulate(run, row);
+      row->lost = run.report.lost() + run.report.missing();
+      double expected = motionExpected(c.motion, context.types, TableOptions(), WorldOptions().gravity);
+      if (std::isnan(expected)) {
+        // No closed form: plain Bullet at 1/4000 s and 100 iterations, once.
+        auto known = context.motion_references.find(c.label);
+        if (known == context.motion_references.end()) {
+          BenchSetting reference;
+          reference.mode_label = "none_nosleep";
+          reference.mode = "none";
+          reference.sleeping = false;
+          reference.time_step = 1.0 / 4000;
+          reference.iterations = 100;
+          BenchCase once = c;
+          once.repeats = 1;
+          double truth = 0.0;
+          TimedRun reference_run;
+          if (Status ran = measureMotion(once, reference, context, &truth, &reference_run); !ran)
+            return ran;
+          known = context.motion_references.emplace(c.label, truth).first;
+        }
+        expected = known->second;
+      }
+      row->motion_measured = measured;
+      row->motion_expected = expected;
+      // A motion that never happened is all error.
+      row->motion_error_pct =
+          std::isnan(measured) || !(expected != 0.0) ? 100.0
+                                                     : 100.0 * std::abs(measured / expected - 1.0);
+      return Status::success();
+    }
   }
   return Status::error("unknown benchmark metric");
 }
@@ -357,14 +436,16 @@ std::string benchCsvHeader() {
   return "case,scene,bricks,mode,sleeping,time_step,iterations,sim_time,wall_time,"
          "wall_ms_per_sim_s,real_time_factor,steps,bullet_steps,awake_brick_steps,"
          "bullet_share,contact_share,stability_share,drift_mm,penetration_mm,"
-         "collapse_layer_error,threshold_error_pct,divergence_mm,nonfinite,lost,refused\n";
+         "collapse_layer_error,threshold_error_pct,divergence_mm,nonfinite,lost,refused,"
+         "motion_measured,motion_expected,motion_error_pct\n";
 }
 
 std::string toCsv(const BenchRow& r) {
   const double staged = r.bullet_seconds + r.contact_seconds + r.stability_seconds;
   auto share = [&](double part) { return staged > 0.0 ? part / staged : 0.0; };
+  // Empty where the row does not measure it: `absent`, or NaN.
   auto optional = [](double value, double absent) {
-    if (value == absent) return std::string();
+    if (value == absent || std::isnan(value)) return std::string();
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
     return std::string(text);
@@ -373,7 +454,7 @@ std::string toCsv(const BenchRow& r) {
   std::snprintf(
       line, sizeof line,
       "%s,%s,%zu,%s,%d,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.4f,%s,%s,%s,%s,"
-      "%s,%llu,%zu,%zu\n",
+      "%s,%llu,%zu,%zu,%s,%s,%s\n",
       r.label.c_str(), r.scene.c_str(), r.bricks, r.setting.mode_label.c_str(),
       r.setting.sleeping ? 1 : 0, r.setting.time_step, r.setting.iterations, r.sim_time,
       r.wall_time, r.sim_time > 0.0 ? 1000.0 * r.wall_time / r.sim_time : 0.0,
@@ -382,7 +463,8 @@ std::string toCsv(const BenchRow& r) {
       share(r.stability_seconds), optional(r.drift_mm, -1.0).c_str(),
       optional(r.penetration_mm, -1.0).c_str(), optional(r.collapse_layer_error, -1e9).c_str(),
       optional(r.threshold_error_pct, -1.0).c_str(), optional(r.divergence_mm, -1.0).c_str(),
-      r.nonfinite, r.lost, r.refused);
+      r.nonfinite, r.lost, r.refused, optional(r.motion_measured, -1.0).c_str(),
+      optional(r.motion_expected, -1.0).c_str(), optional(r.motion_error_pct, -1.0).c_str());
   return line;
 }
 

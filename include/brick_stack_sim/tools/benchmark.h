@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/tools/motion_cases.h"
 
 namespace brick_stack_sim {
 
@@ -27,6 +29,7 @@ enum class BenchMetric {
   kDrop,        ///< Everything moves: penetration [mm]; cost is the point.
   kHarmonic,    ///< Harmonic stack: |measured threshold factor - 1| [% of f].
   kSlantTower,  ///< Slant tower: measured - statics collapse layer [layers].
+  kMotion,      ///< A motion with an answer from mechanics: |measured / expected - 1| [%].
 };
 
 struct BenchCase {
@@ -36,6 +39,7 @@ struct BenchCase {
   double duration = 10.0;  ///< Sim time per run [s].
   int bricks = 10;         ///< kHarmonic: stack height.
   double offset = 0.011;   ///< kSlantTower: layer shift [m].
+  MotionCase motion = MotionCase::kSlide;  ///< kMotion: which.
   /// Runs of a short case; the fastest counts, as the least disturbed by the
   /// rest of a shared machine (kSettled and kDrop).
   int repeats = 1;
@@ -63,6 +67,11 @@ struct BenchRow {
   double collapse_layer_error = -1e9;  ///< -1e9: not measured.
   double threshold_error_pct = -1.0;
   double divergence_mm = -1.0;
+  /// kMotion: the quantity measured and what mechanics (or, for the domino
+  /// wave, plain Bullet at 1/4000 s and 100 iterations) says; NaN: absent.
+  double motion_measured = std::numeric_limits<double>::quiet_NaN();
+  double motion_expected = std::numeric_limits<double>::quiet_NaN();
+  double motion_error_pct = -1.0;
   unsigned long long nonfinite = 0;
   std::size_t lost = 0;     ///< Bricks placed but gone at the end, lost or missing (must be 0).
   std::size_t refused = 0;  ///< Scene placements the world refused.
@@ -79,6 +88,8 @@ struct BenchContext {
   /// Reference runs (1/4000 s, 100 iterations) are costly and the same for
   /// every setting of a case and mode: computed once, by "scene/mode".
   mutable std::map<std::string, std::vector<BrickSnapshot>> references;
+  /// The same for the motions without a closed form, by case label.
+  mutable std::map<std::string, double> motion_references;
 };
 
 /// Runs one case at one setting.
