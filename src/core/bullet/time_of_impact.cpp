@@ -1,5 +1,6 @@
 #include "bullet/time_of_impact.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
@@ -61,8 +62,10 @@ bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, cons
       from(a.localGetSupportingVertex(from.getBasis().transpose() * -normal));
   const btScalar distance = normal.dot(deepest) - offset;
   const btScalar closing = -normal.dot(to.getOrigin() - from.getOrigin());
-  if (distance < 0 || !(closing > 0) || distance > closing) return false;
-  *fraction = distance / closing;
+  if (!(closing > 0) || distance > closing) return false;
+  // Already through its surface (the discrete contact has not pushed it out
+  // yet): it may go no further in.
+  *fraction = std::max<btScalar>(distance, 0) / closing;
   gap->distance = 0;
   gap->normal = normal;
   gap->on_b = deepest + *fraction * (to.getOrigin() - from.getOrigin());

@@ -33,7 +33,8 @@ bool timeOfImpact(const btConvexShape& a, const btTransform& from, const btTrans
                   btScalar* fraction, SurfaceGap* gap);
 
 /// timeOfImpact() against a static plane (the floor), exactly: the point of
-/// `a` deepest along the plane's normal reaches it.
+/// `a` deepest along the plane's normal reaches it (at once when it is
+/// already below it: a half-space is never passed through).
 bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, const btTransform& to,
                            const btStaticPlaneShape& plane, const btTransform& at_plane,
                            btScalar* fraction, SurfaceGap* gap);

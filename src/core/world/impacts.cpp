@@ -107,9 +107,9 @@ double firstContactOnTheWay(const WorldState& w, const Striker& striker,
                             const Eigen::Isometry3d& from, BodyHandle struck) {
   const BrickRecord* record = w.bricks.find(striker.handle);
   if (!record) return 1.0;
-  // As the engine's continuous collision (BrickDynamicsWorld): swept past a
-  // quarter of its thickness a step, meeting what it closes on by half that.
-  const double sweep = 0.5 * record->type.halfExtents().minCoeff();
+  // As the engine's continuous collision (BrickDynamicsWorld): swept past
+  // half its thickness a step, meeting what it closes on by half that.
+  const double sweep = record->type.halfExtents().minCoeff();
   const Eigen::Vector3d travel = striker.pose.translation() - from.translation();
   double fraction = 1.0;
   if (travel.norm() <= sweep ||

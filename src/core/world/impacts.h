@@ -33,8 +33,8 @@ struct Striker {
 
 /// Where along its way from `from` to its end pose `striker` first touches
 /// `struck` (the fraction of the way, 1 when it does not touch it on the
-/// way). A striker that covers more than a quarter of its thickness in a
-/// step is swept (it could end the step beyond a thin brick it passed);
+/// way). A striker that covers more than half its thickness in a step is
+/// swept (it could end the step beyond a thin brick it passed);
 /// a slower one is judged where it ends, as the discrete contact would.
 double firstContactOnTheWay(const WorldState& world, const Striker& striker,
                             const Eigen::Isometry3d& from, BodyHandle struck);
