@@ -218,6 +218,35 @@ TEST_P(LoadsInMode, AHeldBrickPressedOnACantileverTipsItOnlyPastTheStaticsForce)
   }
 }
 
+TEST_P(LoadsInMode, ABrickSlidAcrossATowerTopOrSetDownOnItWakesNothing) {
+  // A KAPLA sliding across the top layer of a frozen 6-layer tower pulls
+  // the top plank it rubs on sideways with mu m g, against friction of
+  // mu (m_top + m) g under it; one set down on the top presses with its
+  // weight, inside the top's support. Statics holds throughout: nothing of
+  // the tower wakes or moves.
+  for (const bool sliding : {true, false}) {
+    SCOPED_TRACE(sliding ? "slid across" : "set down");
+    auto world = test::worldWithFriction(GetParam(), 0.5);
+    for (int i = 0; i < 12; ++i) ASSERT_TRUE(world->addBrick(test::towerBrick(i)).ok);
+    const test::TowerSlot top = test::towerSlot(5, 0);
+    // Along the top plank it lies on (along y), from 3 cm short of its
+    // centre at 0.3 m/s: it stops after v^2 / (2 mu g) = 9 mm, still on it.
+    BrickPlacement slider = placement(
+        "slider", {top.x, sliding ? top.y - 0.03 : top.y, top.z + kKaplaThickness}, top.yaw);
+    if (sliding) slider.linear_velocity = Eigen::Vector3d(0.0, 0.3, 0.0);
+    ASSERT_TRUE(world->addBrick(slider).ok);
+    world->takeEvents();
+    test::runFor(world.get(), 1.0);
+    EXPECT_TRUE(wakesOf(world.get()).empty());
+    for (int i = 0; i < 12; ++i) {
+      const std::string id = "t" + std::to_string(i);
+      EXPECT_EQ(test::snapshotOf(*world, id).state, BrickState::kStable) << id;
+      EXPECT_EQ(test::displacement(*world, id), 0.0) << id;
+    }
+    if (sliding) EXPECT_GT(test::displacement(*world, "slider"), 0.005);  // it did slide
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, LoadsInMode, ::testing::Values("com", "equilibrium"));
 
 }  // namespace
