@@ -68,16 +68,25 @@ bool BrickDynamicsWorld::firstHit(btRigidBody* body, const btTransform& to, Hit*
   return found;
 }
 
+bool BrickDynamicsWorld::moves(const btRigidBody& body) {
+  return body.isActive() && !body.isStaticOrKinematicObject();
+}
+
+bool BrickDynamicsWorld::stepHits(btRigidBody* body, btScalar time_step, btTransform* predicted,
+                                  Hit* hit) const {
+  body->setHitFraction(1);
+  if (!moves(*body)) return false;
+  body->predictIntegratedTransform(time_step, *predicted);
+  return sweeps(*body, *predicted) && firstHit(body, *predicted, hit);
+}
+
 void BrickDynamicsWorld::createPredictiveContacts(btScalar time_step) {
   releasePredictiveContacts();
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
-    body->setHitFraction(1);
-    if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
     btTransform predicted;
-    body->predictIntegratedTransform(time_step, predicted);
     Hit hit;
-    if (!sweeps(*body, predicted) || !firstHit(body, predicted, &hit)) continue;
+    if (!stepHits(body, time_step, &predicted, &hit)) continue;
     // A contact the solver keeps it from closing by more than the gap:
     // what it strikes takes the blow in this step, as on touching.
     const btVector3 travel =
@@ -105,15 +114,12 @@ void BrickDynamicsWorld::createPredictiveContacts(btScalar time_step) {
 void BrickDynamicsWorld::integrateTransforms(btScalar time_step) {
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
-    body->setHitFraction(1);
-    if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
     btTransform predicted;
-    body->predictIntegratedTransform(time_step, predicted);
-    // What the solver could not stop in time ends its step where it meets.
     Hit hit;
-    if (sweeps(*body, predicted) && firstHit(body, predicted, &hit))
+    // What the solver could not stop in time ends its step where it meets.
+    if (stepHits(body, time_step, &predicted, &hit))
       body->predictIntegratedTransform(time_step * hit.fraction, predicted);
-    body->proceedToTransform(predicted);
+    if (moves(*body)) body->proceedToTransform(predicted);
   }
 }
 

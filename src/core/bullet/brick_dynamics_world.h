@@ -39,6 +39,11 @@ class BrickDynamicsWorld : public btDiscreteDynamicsWorld {
   bool firstHit(btRigidBody* body, const btTransform& to, Hit* hit) const;
   /// Whether `body` moves so far in this step that it sweeps (`predicted`: where it would end).
   static bool sweeps(const btRigidBody& body, const btTransform& predicted);
+  /// Whether Bullet integrates `body` (awake, dynamic).
+  static bool moves(const btRigidBody& body);
+  /// For a body that moves: where it would end the step (`predicted`), and
+  /// whether it sweeps into something on the way (`hit`).
+  bool stepHits(btRigidBody* body, btScalar time_step, btTransform* predicted, Hit* hit) const;
 };
 
 }  // namespace brick_stack_sim

@@ -325,9 +325,7 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       RestTracker::Mover& mover = rest_.record(body->handle);
       BrickStability& stability = mover.stability;
       FreezeDecision decision;
-      if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) {
-        continue;
-      }
+      if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) continue;
       const bool in_place = mover.woken && (body->com - mover.woken_at).norm() < kMovedAway;
       if (in_place && !standsWithMargin(*body, stability, decision)) {
         // Where statics woke it, it waits for what changed to show: another
@@ -355,21 +353,18 @@ void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision
 bool StackStabilityModel::standsWithMargin(const BodyMotion& body, const BrickStability& stability,
                                            const FreezeDecision& decision) const {
   // Exact statics in every mode: the COM rule may pass what statics woke.
-  SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
-  join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
+  const SupportGraph what_if = joinedCopy(body, stability, decision);
   const StaticsSolution solution =
       assembleStatics(what_if, what_if.bricks(), options_, kRefreezeLoadFactor).solve();
   return solution.solved && solution.feasible;
 }
 
-StabilityDecisions StackStabilityModel::joiningWakes(const BodyMotion& body,
-                                                     const BrickStability& stability,
-                                                     const FreezeDecision& decision) const {
+SupportGraph StackStabilityModel::joinedCopy(const BodyMotion& body,
+                                             const BrickStability& stability,
+                                             const FreezeDecision& decision) const {
   SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
   join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
-  StabilityDecisions consequences;
-  settle(&what_if, nullptr, &consequences);
-  return consequences;
+  return what_if;
 }
 
 void StackStabilityModel::wakeWithLoad(const WakeDecision& first, SupportGraph* graph,
@@ -431,7 +426,9 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
     return result;
   }
   // Its load on the stack below, judged on a copy of the components it joins.
-  const StabilityDecisions consequences = joiningWakes(brick, stability, decision);
+  SupportGraph what_if = joinedCopy(brick, stability, decision);
+  StabilityDecisions consequences;
+  settle(&what_if, nullptr, &consequences);
   for (const WakeDecision& woken : consequences.wake)
     if (woken.brick != brick.handle) result.would_fall.push_back(woken.brick);
   std::sort(result.would_fall.begin(), result.would_fall.end());

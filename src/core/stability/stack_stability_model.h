@@ -65,11 +65,10 @@ class StackStabilityModel : public StabilityModel {
                      BrickStability* stability, FreezeDecision* decision) const;
   void freeze(const BodyMotion& body, FreezeDecision decision, BrickStability stability,
               StabilityDecisions* decisions);
-  /// What would wake if `body`, admitted as `decision` on `stability`,
-  /// joined the stack: judged on a copy of the components it would join.
-  /// Nothing changes.
-  StabilityDecisions joiningWakes(const BodyMotion& body, const BrickStability& stability,
-                                  const FreezeDecision& decision) const;
+  /// A copy of the components `body` would join, admitted as `decision` on
+  /// `stability`, with it joined: a what-if. Nothing changes.
+  SupportGraph joinedCopy(const BodyMotion& body, const BrickStability& stability,
+                          const FreezeDecision& decision) const;
   /// Whether `body` may freeze again where the model woke it: rigid-block
   /// statics of the component it would join, with it, holds with every
   /// measured load a margin larger.
