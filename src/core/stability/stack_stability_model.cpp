@@ -103,6 +103,10 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
   settle(&graph_, &rest_, decisions);
 }
 
+bool StackStabilityModel::moves(BodyHandle body) const {
+  return !std::binary_search(resting_.begin(), resting_.end(), body);
+}
+
 void StackStabilityModel::measureLoads(const StabilityInput& input) {
   resting_.clear();
   for (const BodyMotion& body : input.movers)
@@ -238,9 +242,8 @@ bool StackStabilityModel::evaluateMover(const BodyMotion& body,
                                         BrickStability* stability, FreezeDecision* decision) const {
   // A brick at rest on it is judged next, from the bottom up, and its
   // weight then passes through the stack; one that moves presses now.
-  stability->external_loads = loads_.on(body.handle, [this](BodyHandle source) {
-    return !std::binary_search(resting_.begin(), resting_.end(), source);
-  });
+  stability->external_loads =
+      loads_.on(body.handle, [this](BodyHandle source) { return moves(source); });
   stability->supports =
       supportPatches(body, contacts, frozenOrGround(graph_), options_,
                      criterion_->usesSideContacts() ? &stability->side_contacts : nullptr);
@@ -352,8 +355,16 @@ void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision
 
 bool StackStabilityModel::standsWithMargin(const BodyMotion& body, const BrickStability& stability,
                                            const FreezeDecision& decision) const {
-  // Exact statics in every mode: the COM rule may pass what statics woke.
-  const SupportGraph what_if = joinedCopy(body, stability, decision);
+  // Exact statics in every mode: the COM rule may pass what statics woke;
+  // with every load measured on it, those of bricks at rest on it too
+  // (frozen, it will bear them). While a brick that moves still presses
+  // on what it would join, what statics says now may not hold a step on.
+  BrickStability loaded = stability;
+  loaded.external_loads = loads_.on(body.handle);
+  const SupportGraph what_if = joinedCopy(body, loaded, decision);
+  for (BodyHandle brick : what_if.bricks())
+    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
+      return false;
   const StaticsSolution solution =
       assembleStatics(what_if, what_if.bricks(), options_, kRefreezeLoadFactor).solve();
   return solution.solved && solution.feasible;

@@ -89,6 +89,8 @@ class StackStabilityModel : public StabilityModel {
   ContactLoads loads_;
   /// The movers at rest in the last step measured, in handle order.
   std::vector<BodyHandle> resting_;
+  /// Whether `body`, a source of measured loads, is not among resting_.
+  bool moves(BodyHandle body) const;
   std::uint64_t steps_ = 0;  ///< Steps the model has seen.
   /// When each frozen brick last took a changed load into its statics.
   std::unordered_map<BodyHandle, std::uint64_t> loads_judged_at_;
