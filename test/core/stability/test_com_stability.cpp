@@ -160,9 +160,11 @@ TEST(ComStability, SlantTowerCollapsesExactlyAtTheStaticsLayer) {
     // stays on the table and flat. Every brick above it goes.
     EXPECT_EQ(after.cost.wake_cycles, 0u) << offset;
     const double collapse_time = collapse - 1.0;  // the deciding brick's placement
-    for (const SimEvent& e : after.events)
-      if (e.kind == SimEventKind::kWoken && e.time < collapse_time + 0.1)
+    for (const SimEvent& e : after.events) {
+      if (e.kind == SimEventKind::kWoken && e.time < collapse_time + 0.1) {
         EXPECT_NE(e.brick_id, "b0") << offset << " at " << e.time << ": " << e.reason;
+      }
+    }
     EXPECT_LT(after.bricks[0].displacement, 0.03) << offset;
     EXPECT_LT(after.bricks[0].rotation, 0.05) << offset;
     for (std::size_t i = 1; i < after.bricks.size(); ++i) {

@@ -243,7 +243,9 @@ TEST_P(LoadsInMode, ABrickSlidAcrossATowerTopOrSetDownOnItWakesNothing) {
       EXPECT_EQ(test::snapshotOf(*world, id).state, BrickState::kStable) << id;
       EXPECT_EQ(test::displacement(*world, id), 0.0) << id;
     }
-    if (sliding) EXPECT_GT(test::displacement(*world, "slider"), 0.005);  // it did slide
+    if (sliding) {
+      EXPECT_GT(test::displacement(*world, "slider"), 0.005);  // it did slide
+    }
   }
 }
 

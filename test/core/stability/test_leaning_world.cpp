@@ -384,8 +384,11 @@ TEST(EquilibriumWake, ATowerPastItsCollapseLayerWakesFromTheFailingBrickOnce) {
     if (e.time == collapse_time) at_collapse.insert(e.brick_id);
   }
   EXPECT_EQ(at_collapse, (std::set<std::string>{"b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8"}));
-  for (const auto& [id, count] : wakes)
-    if (id != "b0") EXPECT_EQ(count, 1) << id << " woken more than once";
+  for (const auto& [id, count] : wakes) {
+    if (id != "b0") {
+      EXPECT_EQ(count, 1) << id << " woken more than once";
+    }
+  }
   EXPECT_EQ(world->cost().wake_cycles, 0u);
   EXPECT_LT(displacement(*world, "b0"), 0.03);
   EXPECT_GT(displacement(*world, "b8"), 0.02);  // it fell

@@ -184,9 +184,10 @@ TEST_P(FastThrow, APlankAtAnyAcceptedSpeedHitsWhatIsInItsWay) {
     }
     // Layer 3 lies along y at x = -offset; the throw is along +x.
     EXPECT_GT(struck.pose.translation().x() - placed.x(), 0.005) << "the struck plank did not move";
-    if (striker_here)
+    if (striker_here) {
       EXPECT_LT(striker.pose.translation().x(), struck.pose.translation().x())
           << "the striker passed the plank it struck";
+    }
   }
 }
 
