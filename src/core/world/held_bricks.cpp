@@ -16,6 +16,9 @@ namespace {
 /// Rounds of pushing the hand's pose out of what stops it: one obstacle
 /// can push it into another (a corner of brick and table).
 constexpr int kBlockingRounds = 3;
+/// A press below this is none [N]: a ten-thousandth of a KAPLA's weight,
+/// far above what a hand resting flush on a brick presses by rounding.
+constexpr double kLeastPress = 1e-5;
 
 /// One step of the hand: where it gets to, and the move and turn that take
 /// it there.
@@ -93,7 +96,7 @@ void pressOn(const WorldState& w, const BrickRecord& held, const Eigen::Isometry
   const HeldOptions& hand = w.options.held;
   const double beyond = (pose.translation() - held.held_target.translation()).dot(stop.normal);
   const double force = std::min(hand.stiffness * beyond, hand.max_force);
-  if (!(force > 0.0)) return;
+  if (!(force > kLeastPress)) return;
   std::vector<PairContact> touching;
   appendContacts(w, held.handle, held.type.friction, OrientedBox{pose, held.type.halfExtents()},
                  stop.brick, true, &touching);
