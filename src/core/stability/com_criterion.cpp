@@ -23,9 +23,6 @@ const double kGravity = StaticsOptions().gravity;
 /// (a brick tipping off it, a hand pressing) is far past it.
 constexpr double kMeasuredLoadFactor = 0.98;
 
-/// A support patch whose normal is further than this from vertical is
-/// inclined [rad]: 20 mrad needs a friction coefficient of 0.02.
-constexpr double kFlatSupport = 0.02;
 
 /// The resultant of a brick's vertical load (`mass` acting through
 /// `centre`) and `pushes`, where its line of action crosses the plane
@@ -90,10 +87,16 @@ bool ComCriterion::loadsHold(const BodyMotion& brick, const BrickStability& stab
 }
 
 bool ComCriterion::inclined(const BrickStability& stability) const {
-  const double flat = std::cos(kFlatSupport);
-  for (const SupportPatch& patch : stability.supports)
-    for (const Eigen::Vector3d& normal : patch.normals)
-      if (normal.z() < flat) return true;
+  // A vertical force on a support whose normal leans by t from vertical
+  // needs friction tan t; the statics LP's pyramid holds cos(pi / faces) of
+  // the cone in every direction.
+  const double held = std::cos(M_PI / StaticsOptions().friction_faces);
+  for (const SupportPatch& patch : stability.supports) {
+    for (const Eigen::Vector3d& normal : patch.normals) {
+      const double sideways = normal.head<2>().norm();
+      if (sideways > held * patch.friction * normal.z()) return true;
+    }
+  }
   return false;
 }
 
@@ -133,8 +136,8 @@ FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
 
 bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stability,
                           FreezeDecision* decision) const {
-  // On inclined supports the COM rule cannot tell a brick that rests from
-  // one that slides: friction must carry the slope, which statics checks.
+  // On supports steeper than friction holds a vertical load on, the COM
+  // rule cannot tell a brick that rests from one that slides: statics can.
   if (!stability.supports.empty() && stability.margin > options_.min_margin &&
       loadsHold(brick, stability) && (!inclined(stability) || stands({brick}, {&stability}))) {
     *decision = FreezeDecision{brick.handle, BrickState::kStable, stability.margin, {}, ""};

@@ -73,7 +73,9 @@ class ComCriterion : public StabilityCriterion {
   /// Whether the loads pressing on it from outside the stack leave it
   /// pressed onto its supports, sideways within friction.
   bool loadsHold(const BodyMotion& brick, const BrickStability& stability) const;
-  /// Whether a support patch of it is inclined (not flat within kFlatSupport).
+  /// Whether a support of it leans further from level than its friction
+  /// could hold a vertical load on (then the COM rule's vertical loads are
+  /// not an equilibrium, and statics must say whether it rests).
   bool inclined(const BrickStability& stability) const;
   /// Whether it leans on something (a side contact other than a brick resting on it).
   bool leans(const BrickStability& stability) const;
