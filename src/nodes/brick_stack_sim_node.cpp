@@ -5,7 +5,7 @@
 #include <ros/package.h>
 #include <ros/ros.h>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/node.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "brick_stack_sim/ros/xmlrpc_parameters.h"

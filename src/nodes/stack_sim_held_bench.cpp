@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "brick_stack_sim/tools/package_data.h"

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "brick_stack_sim/core/scene/scene.h"
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 
 namespace brick_stack_sim {
 

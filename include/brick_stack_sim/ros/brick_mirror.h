@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "brick_stack_sim/Brick.h"
-#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 
 namespace brick_stack_sim {

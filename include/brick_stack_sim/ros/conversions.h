@@ -13,8 +13,8 @@
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/core/brick.h"
-#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/status.h"
 
 namespace brick_stack_sim {

@@ -14,7 +14,7 @@
 #include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 #include "brick_stack_sim/ros/brick_mirror.h"
 
 namespace brick_stack_sim {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/brick_world.h"

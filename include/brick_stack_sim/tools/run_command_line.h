@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/options/simulation_config.h"
+#include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/core/status.h"
 
 namespace brick_stack_sim {

@@ -3,7 +3,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "stability/body_handle.h"
+#include "physics/body_handle.h"
 
 namespace brick_stack_sim {
 

@@ -8,10 +8,10 @@
 
 #include <Eigen/Geometry>
 
-#include "brick_stack_sim/core/brick.h"
-#include "brick_stack_sim/core/brick_type.h"
-#include "brick_stack_sim/core/world/world_options.h"
-#include "stability/body_handle.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/core/types/world_options.h"
+#include "physics/body_handle.h"
 
 class btCollisionDispatcher;
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "stability/contact.h"
+#include "physics/contact.h"
 
 namespace brick_stack_sim {
 

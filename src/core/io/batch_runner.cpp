@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/core/simulation/simulation.h"
 #include "io/json_writer.h"
 
 namespace brick_stack_sim {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "stability/body_handle.h"
+#include "physics/body_handle.h"
 
 namespace brick_stack_sim {
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <vector>
 
-#include "stability/contact.h"
+#include "physics/contact.h"
 
 namespace brick_stack_sim {
 

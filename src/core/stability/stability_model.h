@@ -7,10 +7,10 @@
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/geometry/polygon2d.h"
-#include "brick_stack_sim/core/stability/stability_options.h"
-#include "stability/contact.h"
+#include "brick_stack_sim/core/types/stability_options.h"
+#include "physics/contact.h"
 
 namespace brick_stack_sim {
 

@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "stability/stability_model.h"
 
 namespace brick_stack_sim {

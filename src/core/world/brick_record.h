@@ -5,9 +5,9 @@
 
 #include <Eigen/Geometry>
 
-#include "brick_stack_sim/core/brick.h"
-#include "brick_stack_sim/core/brick_type.h"
-#include "stability/body_handle.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "physics/body_handle.h"
 
 namespace brick_stack_sim {
 

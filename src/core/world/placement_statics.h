@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/geometry/box_geometry.h"
-#include "stability/contact.h"
+#include "physics/contact.h"
 
 namespace brick_stack_sim {
 

@@ -11,6 +11,7 @@
 
 #include "support/kapla.h"
 #include "support/world_probe.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -132,7 +133,7 @@ TEST_P(PropInMode, APropSlidUnderAFrozenPlankBecomesOneOfItsSupports) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, PropInMode, ::testing::Values("com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, PropInMode, ::testing::ValuesIn(test::modelModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

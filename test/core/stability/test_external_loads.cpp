@@ -17,6 +17,7 @@
 #include "brick_stack_sim/core/scene/scene.h"
 #include "support/kapla.h"
 #include "support/world_probe.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -249,7 +250,7 @@ TEST_P(LoadsInMode, ABrickSlidAcrossATowerTopOrSetDownOnItWakesNothing) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, LoadsInMode, ::testing::Values("com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, LoadsInMode, ::testing::ValuesIn(test::modelModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

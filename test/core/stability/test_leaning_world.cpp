@@ -16,6 +16,7 @@
 #include "support/kapla.h"
 #include "support/leaning.h"
 #include "support/world_probe.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -394,7 +395,7 @@ TEST(EquilibriumWake, ATowerPastItsCollapseLayerWakesFromTheFailingBrickOnce) {
   EXPECT_GT(displacement(*world, "b8"), 0.02);  // it fell
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, StaticsInMode, ::testing::Values("com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, StaticsInMode, ::testing::ValuesIn(test::modelModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

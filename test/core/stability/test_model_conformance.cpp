@@ -10,9 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "stability/stability_registry.h"
 #include "support/kapla.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -21,16 +22,6 @@ using test::kKaplaLength;
 using test::kKaplaMass;
 using test::kKaplaThickness;
 using test::kKaplaWidth;
-
-/// The modes of the registry that run a model (all but plain Bullet).
-std::vector<std::string> modelModes() {
-  std::vector<std::string> modes;
-  for (const std::string& mode : availableStabilityModes()) {
-    if (createStabilityModel(test::optionsFor(mode).stability, [](BodyHandle) { return ""; }))
-      modes.push_back(mode);
-  }
-  return modes;
-}
 
 std::string nameOf(BodyHandle handle) {
   return isGround(handle) ? "table" : "b" + std::to_string(handle);
@@ -261,7 +252,7 @@ TEST_P(ModelConformance, APlacementWithNothingFrozenUnderItIsNotStable) {
   EXPECT_FALSE(floating.reason.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, ModelConformance, ::testing::ValuesIn(modelModes()),
+INSTANTIATE_TEST_SUITE_P(Registry, ModelConformance, ::testing::ValuesIn(test::modelModes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });

@@ -16,6 +16,7 @@
 
 #include "support/kapla.h"
 #include "support/world_probe.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -198,7 +199,7 @@ TEST_P(SharedLoadsInMode, AQueryAgreesWithStaticsOnAPlankBridgingACantileverAndA
   EXPECT_TRUE(test::fingerprint(*world) == before) << "a query changed the world";
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, SharedLoadsInMode, ::testing::Values("com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, SharedLoadsInMode, ::testing::ValuesIn(test::modelModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

@@ -15,6 +15,7 @@
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/tools/motion_cases.h"
 #include "support/kapla.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -100,7 +101,7 @@ TEST_P(MotionInMode, ADominoWaveRunsAsInPlainBulletAtAFineStep) {
   EXPECT_NEAR(speed / reference, 1.0, 0.1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, MotionInMode, ::testing::Values("none", "com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, MotionInMode, ::testing::ValuesIn(test::allModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

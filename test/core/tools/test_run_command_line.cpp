@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "brick_stack_sim/tools/run_command_line.h"
 #include "support/kapla.h"
 

@@ -17,6 +17,7 @@
 
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -216,7 +217,7 @@ TEST_P(ChangeTracking, EveryChangeIsReportedAndASettledWorldReportsNothing) {
   EXPECT_GT(differences_, 1000) << "the scene changed too little to prove anything";
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, ChangeTracking, testing::Values("com", "equilibrium", "none"),
+INSTANTIATE_TEST_SUITE_P(Modes, ChangeTracking, testing::ValuesIn(test::allModes()),
                          [](const testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });

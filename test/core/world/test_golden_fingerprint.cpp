@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/scene/generators.h"
-#include "brick_stack_sim/core/scene/scene_player.h"
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/simulation/scene_player.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
 

@@ -13,6 +13,7 @@
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
 
+#include "support/modes.h"
 namespace brick_stack_sim {
 namespace {
 
@@ -170,7 +171,7 @@ TEST_P(HeldBrick, SweptThroughATowerItKnocksBricksOff) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, HeldBrick, testing::Values("none", "com", "equilibrium"));
+INSTANTIATE_TEST_SUITE_P(Modes, HeldBrick, testing::ValuesIn(test::allModes()));
 
 }  // namespace
 }  // namespace brick_stack_sim

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
 

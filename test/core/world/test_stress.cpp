@@ -6,7 +6,7 @@
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "support/kapla.h"
 
 namespace brick_stack_sim {

@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/brick.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/scene/scene.h"
-#include "brick_stack_sim/core/scene/scene_player.h"
-#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/simulation/scene_player.h"
+#include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/brick_world.h"
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 
 namespace brick_stack_sim {
 

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/brick.h"
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 
 namespace brick_stack_sim {
 

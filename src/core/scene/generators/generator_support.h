@@ -8,10 +8,10 @@
 #include <yaml-cpp/yaml.h>
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 #include "scene/yaml_fields.h"
 
 namespace brick_stack_sim {

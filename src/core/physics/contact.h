@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "stability/body_handle.h"
+#include "physics/body_handle.h"
 
 namespace brick_stack_sim {
 

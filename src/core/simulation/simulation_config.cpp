@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/options/simulation_config.h"
+#include "brick_stack_sim/core/simulation/simulation_config.h"
 
 #include "brick_stack_sim/core/options/options_reader.h"
 #include "brick_stack_sim/core/options/yaml_parameters.h"

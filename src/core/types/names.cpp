@@ -1,7 +1,6 @@
 // The words the core uses for its enums in reports and logs.
-#include "brick_stack_sim/core/brick.h"
-#include "brick_stack_sim/core/sim_event.h"
-#include "world/brick_record.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/sim_event.h"
 
 namespace brick_stack_sim {
 
@@ -43,38 +42,6 @@ const char* toString(SimEventKind kind) {
       return "lost";
   }
   return "unknown";
-}
-
-const char* toString(BrickMode mode) {
-  switch (mode) {
-    case BrickMode::kDynamic:
-      return "dynamic";
-    case BrickMode::kFrozenStable:
-      return "frozen-stable";
-    case BrickMode::kFrozenLeaning:
-      return "frozen-leaning";
-    case BrickMode::kHeld:
-      return "held";
-  }
-  return "unknown";
-}
-
-BrickState toState(BrickMode mode) {
-  switch (mode) {
-    case BrickMode::kDynamic:
-      return BrickState::kDynamic;
-    case BrickMode::kFrozenStable:
-      return BrickState::kStable;
-    case BrickMode::kFrozenLeaning:
-      return BrickState::kLeaning;
-    case BrickMode::kHeld:
-      return BrickState::kHeld;
-  }
-  return BrickState::kDynamic;
-}
-
-BrickMode frozenMode(BrickState kind) {
-  return kind == BrickState::kLeaning ? BrickMode::kFrozenLeaning : BrickMode::kFrozenStable;
 }
 
 }  // namespace brick_stack_sim

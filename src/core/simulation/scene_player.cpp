@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/scene/scene_player.h"
+#include "brick_stack_sim/core/simulation/scene_player.h"
 
 #include <utility>
 

@@ -3,10 +3,10 @@
 #include <memory>
 #include <vector>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/scene.h"
-#include "brick_stack_sim/core/scene/scene_player.h"
-#include "brick_stack_sim/core/sim_event.h"
+#include "brick_stack_sim/core/simulation/scene_player.h"
+#include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 

@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/core/simulation/simulation.h"
 
 #include "util/text_format.h"
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "support/kapla.h"
 
 namespace brick_stack_sim {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "brick_stack_sim/ros/xmlrpc_parameters.h"
 #include "support/xmlrpc_list.h"

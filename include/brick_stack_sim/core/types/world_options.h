@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/stability/stability_options.h"
+#include "brick_stack_sim/core/types/stability_options.h"
 #include "brick_stack_sim/core/status.h"
 
 namespace brick_stack_sim {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/scene/scene.h"
-#include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/core/simulation/simulation.h"
 #include "support/kapla.h"
 
 namespace brick_stack_sim {

@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 
 #include <cmath>
 #include <fstream>

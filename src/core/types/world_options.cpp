@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 
 #include <cmath>
 #include <sstream>

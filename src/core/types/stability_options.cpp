@@ -1,7 +1,7 @@
-#include "brick_stack_sim/core/stability/stability_options.h"
+#include "brick_stack_sim/core/types/stability_options.h"
 
 #include "brick_stack_sim/core/options/options_reader.h"
-#include "brick_stack_sim/core/stability/stability_modes.h"
+#include "brick_stack_sim/core/types/stability_modes.h"
 #include "util/text_format.h"
 #include "util/validation.h"
 

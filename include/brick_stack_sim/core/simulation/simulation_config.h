@@ -6,7 +6,7 @@
 #include "brick_stack_sim/core/options/parameter_value.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 
 namespace brick_stack_sim {
 
