@@ -37,6 +37,11 @@ class StackStabilityModel : public StabilityModel {
   std::vector<BodyHandle> takeRedescribed() override { return graph_.takeRedescribed(); }
 
  private:
+  /// `body` joins `graph` on its supports and side contacts. A frozen brick
+  /// resting on it from above (it was slid under a bridge) gains it as a
+  /// supporter: that brick's load now has one more way down.
+  static void join(SupportGraph* graph, const BodyMotion& body, bool leaning,
+                   BrickStability stability, const StabilityOptions& options);
   /// A brick left the stack (`what_happened`: "removed", "grasped"): what
   /// it carried wakes.
   void forget(BodyHandle brick, const char* what_happened, StabilityDecisions* decisions);

@@ -4,6 +4,13 @@
 
 namespace brick_stack_sim {
 
+void WorldState::recordChange(Change change) {
+  ++revision;
+  if (change == Change::kBricks) return;
+  model_changed = true;
+  if (change == Change::kBodies) contacts.clear();
+}
+
 BrickRecord* BrickRegistry::add(std::unique_ptr<BrickRecord> brick) {
   BrickRecord* record = brick.get();
   by_id_[record->id] = record;

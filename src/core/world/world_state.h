@@ -61,14 +61,27 @@ struct WorldState {
   /// so a brick placed at rest against one is judged with it (a V).
   std::vector<BodyHandle> placed_at_rest;
   unsigned next_serial = 0;
-  /// Grows at every step and every request that may change something
-  /// (BrickWorld::revision).
+  /// Grows at every step that moves or judges something and at every request
+  /// that changes something (BrickWorld::revision).
   std::uint64_t revision = 0;
   CostCounters cost;
   /// Bricks the guard found outside the world box this step, with why; the
   /// world removes them (as lost) once the guard is done with its loop.
   std::vector<std::pair<std::string, std::string>> left_world;
   std::vector<SimEvent> events;
+
+  /// What a request that passed its checks is about to change.
+  enum class Change {
+    kBricks,  ///< Poses, speeds or targets: a new revision stamps what changes.
+    kModel,   ///< And the model has something new to look at in the next step.
+    /// And bodies move in or out of Bullet's world: the last step's contacts
+    /// name them wrongly, so they go.
+    kBodies,
+  };
+  /// Every request records its change here after its checks and before it
+  /// changes anything, so that a refused request leaves the world as it was,
+  /// its revision included.
+  void recordChange(Change change);
 
   double time() const { return start_time + static_cast<double>(cost.steps) * options.time_step; }
   void emit(SimEventKind kind, const std::string& id, std::string reason,

@@ -29,6 +29,7 @@ class InvalidInput : public ::testing::TestWithParam<std::string> {
     for (int i = 0; i < 20; ++i) world_->step();
     world_->takeEvents();
     before_ = fingerprint(*world_);
+    revision_before_ = world_->revision();
   }
 
   /// The request must be refused, say `expected` in its message, and change nothing.
@@ -37,12 +38,16 @@ class InvalidInput : public ::testing::TestWithParam<std::string> {
     EXPECT_NE(status.message.find(expected), std::string::npos)
         << "message '" << status.message << "' does not mention '" << expected << "'";
     EXPECT_TRUE(fingerprint(*world_) == before_) << "a refused request changed the world";
+    // A publisher following revision() would otherwise read every moving
+    // brick again for nothing.
+    EXPECT_EQ(world_->revision(), revision_before_) << "a refused request counted as a change";
     EXPECT_TRUE(world_->takeEvents().empty()) << "a refused request emitted an event";
     EXPECT_EQ(world_->brickCount(), 1u);
   }
 
   std::unique_ptr<BrickWorld> world_;
   std::string before_;
+  std::uint64_t revision_before_ = 0;
 };
 
 TEST_P(InvalidInput, NonFinitePositionInEachAxis) {
@@ -155,6 +160,13 @@ TEST_P(InvalidInput, NonFiniteImpulse) {
   // 0.5 N s at the end of the brick about z: 0.5 * L/2 / I_zz = 2000 rad/s.
   expectRefused(world_->applyImpulse("base", {0, 0.5, 0}, {0.0585, 0, 0.0039}), "spinning");
   expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {1.0, 0, 0.0039}), "outside brick");
+}
+
+TEST_P(InvalidInput, HeldBrickRequestsOutOfTurn) {
+  expectRefused(world_->graspBrick("ghost"), "no brick with id 'ghost'");
+  expectRefused(world_->releaseBrick("base", {0, 0, 0}, {0, 0, 0}), "is not held");
+  expectRefused(world_->setHeldTarget(Eigen::Isometry3d(Eigen::Translation3d(0, 0, 0.1))),
+                "no brick is held");
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, InvalidInput, ::testing::ValuesIn(availableStabilityModes()),
