@@ -13,7 +13,7 @@
 using namespace brick_stack_sim;
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "brick_sim");
+  ros::init(argc, argv, ros_adapter::kNodeName);
   ros::NodeHandle private_node_handle("~");
   ros_adapter::NodeOptions options;
   ParameterValue parameters;

@@ -9,7 +9,6 @@
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
-#include "brick_stack_sim/BrickArray.h"
 #include "brick_stack_sim/GetBricks.h"
 #include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/PlaceBrick.h"
@@ -19,36 +18,19 @@
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
 #include "brick_stack_sim/StepSimulation.h"
-#include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/core/scene/scene.h"
+#include "brick_stack_sim/core/simulation/simulation.h"
 #include "brick_stack_sim/core/status.h"
-#include "brick_stack_sim/core/world/simulation.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/brick_mirror.h"
-#include "brick_stack_sim/ros/brick_transforms.h"
-#include "brick_stack_sim/ros/marker_updates.h"
+#include "brick_stack_sim/ros/interface_names.h"
 #include "brick_stack_sim/ros/node_options.h"
+#include "brick_stack_sim/ros/state_publisher.h"
+#include "brick_stack_sim/ros/step_pacer.h"
 #include "brick_stack_sim/ros/ticket_mutex.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
-
-// Names of DESIGN.md section 3, relative to the node's private namespace
-// (`~bricks` is kBricksTopic on a ros::NodeHandle("~")) except the clock.
-constexpr char kBricksTopic[] = "bricks";
-constexpr char kEventsTopic[] = "events";
-constexpr char kMarkersTopic[] = "markers";
-constexpr char kClockTopic[] = "/clock";
-constexpr char kHeldTargetTopic[] = "held_target";
-constexpr char kPlaceBrickService[] = "place_brick";
-constexpr char kRemoveBrickService[] = "remove_brick";
-constexpr char kResetService[] = "reset";
-constexpr char kGetBricksService[] = "get_bricks";
-constexpr char kPushBrickService[] = "push_brick";
-constexpr char kQueryPlacementService[] = "query_placement";
-constexpr char kPauseService[] = "pause";
-constexpr char kStepService[] = "step";
-constexpr char kGraspBrickService[] = "grasp_brick";
-constexpr char kReleaseBrickService[] = "release_brick";
 
 /// Most steps one ~step request may ask for: 1e6 steps are 1000 s of sim time
 /// at the default step (seconds to minutes of wall time; other clients are
@@ -58,12 +40,6 @@ constexpr unsigned kMaxStepsPerRequest = 1000000;
 /// (main() spins them): a ~get_bricks is answered while a ~place_brick
 /// waits for the world.
 constexpr int kServiceThreads = 4;
-/// Events queued per subscriber before the oldest is dropped: a reset of a
-/// large scene emits a removed and a spawned event per brick in one burst.
-constexpr int kEventQueueSize = 10000;
-/// Wall time [s] between two sends of the resting bricks on /tf_static: each
-/// is the whole set, and only listeners that join later need it.
-constexpr double kStaticTransformsPeriod = 1.0;
 
 /// The ROS face of a Simulation: publishes its state, serves its requests and
 /// steps it on a wall timer so that sim time follows wall time times
@@ -99,12 +75,21 @@ class SimNode {
   /// Sim time [s]; never goes backwards, across resets included.
   double simTime() const;
 
-  // --- stepping --------------------------------------------------------------
+  // --- set-up (node.cpp) -----------------------------------------------------
+  /// Plays the parameter `scene`, if any, before anything is advertised.
+  Status playInitialScene();
+  /// Every service and ~held_target; ~step and ~reset on the long-work queue.
+  void advertiseServices();
+  void logStart(const BrickTypeLibrary& types) const;
+
+  // --- stepping (node.cpp) ---------------------------------------------------
   void onStepTimer(const ros::WallTimerEvent& event);
+  /// The steps the pacer asks for, until the tick's share of wall time is spent.
+  void stepTick();
   /// One world step with the scene's due placements.
   void advance();
   /// advance(), then the state publication when it is due in sim time and
-  /// the wall-time cap allows it (node.cpp says why there is a cap).
+  /// the wall-time cap allows it (StepPacer says why there is a cap).
   void stepOnce();
   /// The timer ticks at publish_rate while the world is settled, else at
   /// step_timer_rate.
@@ -112,24 +97,14 @@ class SimNode {
   /// Restarts the wall/sim time pacing from now (after a pause, a reset, or
   /// when the world cannot keep up).
   void restartPacing();
-
-  // --- publishing ------------------------------------------------------------
-  ros::Time stamp() const;
-  void publishEvents();
-  /// Brings the mirror up to the world and sends what changed: tf always,
-  /// ~bricks and ~markers while subscribed.
+  /// publisher_->publishState(), and ~get_bricks' mirror starts from it
+  /// after a reset.
   void publishState();
-  /// ~bricks: every brick, or (bricks_delta) what `changes` found.
-  BrickArray makeBrickArray(const BrickMirror::Changes* changes, const ros::Time& stamp) const;
-  /// A new subscriber starts from every brick, or every marker: sent to it
-  /// alone, from the mirror, so that it then follows the others' updates.
-  void onBricksSubscriber(const ros::SingleSubscriberPublisher& subscriber);
-  void onMarkersSubscriber(const ros::SingleSubscriberPublisher& subscriber);
-  void publishClock();
   void logRefusedPlacements(const std::vector<RefusedPlacement>& refused);
 
-  // --- services: one handler each; they always return true so the caller
-  // gets success and message, false would only say "call failed".
+  // --- services (node_services.cpp): one handler each; they always return
+  // true so the caller gets success and message, false would only say "call
+  // failed".
   bool placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& response);
   bool removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& response);
   bool reset(ResetScene::Request& request, ResetScene::Response& response);
@@ -151,6 +126,15 @@ class SimNode {
   /// Empties the table (scene empty) or replaces the bricks by the scene's;
   /// on failure nothing changes. `message` receives what was done.
   Status resetWorld(const std::string& scene_name, const Scene& scene, std::string* message);
+  /// The bricks `ids` names for ~get_bricks into `asked`, or every brick
+  /// into `response` when it names none; `left_out` counts those not finite.
+  Status collectBricks(const std::vector<std::string>& ids, GetBricks::Response* response,
+                       std::vector<BrickSnapshot>* asked, std::size_t* left_out);
+  /// Steps a paused world `steps` times for ~step, handing the lock over
+  /// between slices; empty, or why it stopped early.
+  std::string stepPaused(unsigned steps, std::unique_lock<TicketMutex>* lock, unsigned* done);
+  /// A request changed the world: ~bricks is due, and its events go out now.
+  void changed();
   /// Logs a refused request at INFO (at most once a second) and fills the response fields.
   template <typename Response>
   bool refuse(const char* service, const Status& status, Response* response);
@@ -162,30 +146,13 @@ class SimNode {
   std::unique_ptr<Simulation> simulation_;
 
   bool paused_ = false;
-  /// Something changed that ~bricks has not shown yet.
-  bool state_dirty_ = true;
-  /// The world as last published, and what viewers of ~markers show of it.
-  BrickMirror mirror_;
-  /// The world as ~get_bricks last answered (a mirror apart: an answer
-  /// must not hide a change from the next publish).
+  /// The world as ~get_bricks last answered (a mirror apart from the
+  /// publisher's: an answer must not hide a change from the next publish).
   BrickMirror answers_;
-  std::unique_ptr<MarkerUpdates> marker_updates_;
-  /// The next ~markers is a full array for every viewer (after a reset).
-  bool markers_full_due_ = true;
-  /// BrickArray::sequence of the last ~bricks sent to every subscriber.
-  std::uint32_t bricks_sequence_ = 0;
-  double next_publish_time_ = 0.0;    ///< Sim time of the next ~bricks [s].
-  ros::WallTime last_state_publish_;  ///< Wall time of the last ~bricks.
-  ros::WallTime pacing_wall_start_;
-  double pacing_sim_start_ = 0.0;  ///< [s]
+  StepPacer pacer_;
+  std::unique_ptr<StatePublisher> publisher_;
 
   ros::NodeHandle node_handle_;
-  ros::Publisher bricks_publisher_;
-  ros::Publisher events_publisher_;
-  ros::Publisher markers_publisher_;
-  ros::Publisher clock_publisher_;
-  /// /tf for what moved, latched /tf_static for the table and what rests.
-  std::unique_ptr<BrickTransforms> transforms_;
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber held_target_subscriber_;
   ros::WallTimer step_timer_;
