@@ -17,34 +17,30 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <ros/master.h>
 #include <ros/network.h>
 #include <ros/ros.h>
-#include <std_srvs/SetBool.h>
 #include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 #include <xmlrpcpp/XmlRpcClient.h>
 
-#include "brick_stack_sim/BrickArray.h"
-#include "brick_stack_sim/GetBricks.h"
-#include "brick_stack_sim/PlaceBrick.h"
-#include "brick_stack_sim/PushBrick.h"
-#include "brick_stack_sim/QueryPlacement.h"
-#include "brick_stack_sim/RemoveBrick.h"
-#include "brick_stack_sim/ResetScene.h"
-#include "brick_stack_sim/StepSimulation.h"
+#include "brick_stack_sim/client/sim_client.h"
+#include "brick_stack_sim/ros/interface_names.h"
 
 namespace {
 
 using namespace brick_stack_sim;
 
-const std::string kNode = "/brick_sim";
+/// The node measured: its name is its private namespace.
+const std::string kNode = ros_adapter::kDefaultNamespace;
 constexpr int kTowerBricks = 50;          ///< 25 layers of two planks
 constexpr double kTowerSpacing = 0.13;    ///< [m] between tower centres
 constexpr double kPlankHeight = 0.0078;   ///< [m]
@@ -120,29 +116,22 @@ struct TopicCount {
   double bytes = 0.0;
 };
 
+/// A subscriber callback that counts each message of type Message and its bytes.
 template <typename Message>
-ros::Subscriber countMessages(ros::NodeHandle& nh, const std::string& topic, std::mutex* mutex,
-                              TopicCount* count) {
-  return nh.subscribe<Message>(topic, 1000,
-                               [mutex, count](const boost::shared_ptr<const Message>& msg) {
-                                 std::lock_guard<std::mutex> lock(*mutex);
-                                 ++count->messages;
-                                 count->bytes += ros::serialization::serializationLength(*msg);
-                               });
+std::function<void(const boost::shared_ptr<const Message>&)> countMessages(std::mutex* mutex,
+                                                                           TopicCount* count) {
+  return [mutex, count](const boost::shared_ptr<const Message>& msg) {
+    std::lock_guard<std::mutex> lock(*mutex);
+    ++count->messages;
+    count->bytes += ros::serialization::serializationLength(*msg);
+  };
 }
 
 class NodeBench {
  public:
-  NodeBench(double window, int pid) : window_(window), pid_(pid) {
-    place_ = nh_.serviceClient<PlaceBrick>(kNode + "/place_brick", true);
-    remove_ = nh_.serviceClient<RemoveBrick>(kNode + "/remove_brick", true);
-    get_ = nh_.serviceClient<GetBricks>(kNode + "/get_bricks", true);
-    query_ = nh_.serviceClient<QueryPlacement>(kNode + "/query_placement", true);
-    push_ = nh_.serviceClient<PushBrick>(kNode + "/push_brick", true);
-    reset_ = nh_.serviceClient<ResetScene>(kNode + "/reset", true);
-    pause_ = nh_.serviceClient<std_srvs::SetBool>(kNode + "/pause", true);
-    step_ = nh_.serviceClient<StepSimulation>(kNode + "/step", true);
-  }
+  /// Measures the node `sim` reaches (persistent connections), process `pid`.
+  NodeBench(double window, int pid, client::SimClient sim)
+      : window_(window), pid_(pid), sim_(std::move(sim)) {}
 
   /// Every subscriber count of one scene; false when the scene never settled.
   bool run(const Case& scene, const std::string& scene_file, const std::vector<int>& counts,
@@ -165,34 +154,21 @@ class NodeBench {
   }
 
  private:
-  template <typename Service>
-  bool call(ros::ServiceClient& client, Service& srv) {
-    if (!client.isValid()) client = nh_.serviceClient<Service>(client.getService(), true);
-    return client.call(srv) && srv.response.success;
-  }
-
-  bool setPaused(bool paused) {
-    std_srvs::SetBool srv;
-    srv.request.data = paused;
-    return pause_.call(srv) && srv.response.success;
-  }
+  bool setPaused(bool paused) { return sim_.pause(paused).ok; }
 
   /// Plays the scene paused and steps it until every tower brick is frozen,
   /// then lets it run at the node's own pace.
   bool settle(const Case& scene, const std::string& scene_file) {
     if (!setPaused(true)) return false;
-    ResetScene reset;
-    reset.request.scene = scene_file;
-    if (!call(reset_, reset)) {
-      std::fprintf(stderr, "~reset %s: %s\n", scene_file.c_str(), reset.response.message.c_str());
+    const auto reset = sim_.reset(scene_file);
+    if (!reset.ok) {
+      std::fprintf(stderr, "~reset %s: %s\n", scene_file.c_str(), reset.message.c_str());
       return false;
     }
     for (double t = 0.0; t < kSettleSimSeconds; t += 0.5) {
-      StepSimulation step;
-      step.request.steps = 500;
-      if (!call(step_, step)) return false;
-      GetBricks get;
-      if (!call(get_, get)) return false;
+      if (!sim_.step(500).ok) return false;
+      const auto get = sim_.getBricks();
+      if (!get.ok) return false;
       const long frozen = std::count_if(get.response.bricks.begin(), get.response.bricks.end(),
                                         [](const Brick& b) { return b.state != Brick::DYNAMIC; });
       if (static_cast<int>(get.response.bricks.size()) == scene.bricks + scene.moving &&
@@ -212,10 +188,10 @@ class NodeBench {
   /// every kPushPeriod, back and forth, so that they never come to rest.
   void pushMovers(int round) {
     for (std::size_t i = 0; i < moving_ids_.size(); ++i) {
-      PushBrick push;
-      push.request.id = moving_ids_[i];
-      push.request.impulse.x = (round % 2 ? -1.0 : 1.0) * 0.004;  // [N s]: about 0.34 m/s
-      call(push_, push);
+      PushBrick::Request push;
+      push.id = moving_ids_[i];
+      push.impulse.x = (round % 2 ? -1.0 : 1.0) * 0.004;  // [N s]: about 0.34 m/s
+      sim_.pushBrick(push);
     }
   }
 
@@ -233,11 +209,12 @@ class NodeBench {
     TopicCount bricks, markers, tf;
     std::vector<ros::Subscriber> subs;
     if (subscribers >= 1)
-      subs.push_back(countMessages<BrickArray>(nh_, kNode + "/bricks", &mutex, &bricks));
+      subs.push_back(sim_.subscribeBricks(countMessages<BrickArray>(&mutex, &bricks), 1000));
     if (subscribers >= 3) {
-      subs.push_back(countMessages<visualization_msgs::MarkerArray>(nh_, kNode + "/markers", &mutex,
-                                                                    &markers));
-      subs.push_back(countMessages<tf2_msgs::TFMessage>(nh_, "/tf", &mutex, &tf));
+      subs.push_back(sim_.subscribeMarkers(
+          countMessages<visualization_msgs::MarkerArray>(&mutex, &markers), 1000));
+      subs.push_back(nh_.subscribe<tf2_msgs::TFMessage>(
+          "/tf", 1000, countMessages<tf2_msgs::TFMessage>(&mutex, &tf)));
     }
     // Connected and past the first full messages before counting.
     int round = 0;
@@ -264,10 +241,11 @@ class NodeBench {
     rate(tf, tf0, &row->tf_hz, &row->tf_bytes);
   }
 
-  template <typename Service>
-  double timedMs(ros::ServiceClient& client, Service& srv) {
+  /// How long `call` took [ms].
+  template <typename Call>
+  static double timedMs(const Call& call) {
     const auto start = std::chrono::steady_clock::now();
-    call(client, srv);
+    call();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
   }
@@ -281,25 +259,22 @@ class NodeBench {
     const double free_y = depth / 2 + 0.2;
     // On top of the first tower, crossing its top layer.
     const Point2 first = firstTower(scene.bricks);
+    QueryPlacement::Request q;
+    q.pose.position.x = first.x;
+    q.pose.position.y = first.y;
+    q.pose.position.z = 25.5 * kPlankHeight;
+    q.pose.orientation.w = 1.0;
+    PlaceBrick::Request p;
+    p.id = "bench_probe";
+    p.pose.position.x = 0.0;
+    p.pose.position.y = free_y;
+    p.pose.position.z = kPlankHeight / 2;
+    p.pose.orientation.w = 1.0;
     for (int i = 0; i < kLatencyCalls; ++i) {
-      GetBricks g;
-      get.push_back(timedMs(get_, g));
-      QueryPlacement q;
-      q.request.pose.position.x = first.x;
-      q.request.pose.position.y = first.y;
-      q.request.pose.position.z = 25.5 * kPlankHeight;
-      q.request.pose.orientation.w = 1.0;
-      query.push_back(timedMs(query_, q));
-      PlaceBrick p;
-      p.request.id = "bench_probe";
-      p.request.pose.position.x = 0.0;
-      p.request.pose.position.y = free_y;
-      p.request.pose.position.z = kPlankHeight / 2;
-      p.request.pose.orientation.w = 1.0;
-      place.push_back(timedMs(place_, p));
-      RemoveBrick r;
-      r.request.id = "bench_probe";
-      call(remove_, r);
+      get.push_back(timedMs([&] { sim_.getBricks(); }));
+      query.push_back(timedMs([&] { sim_.queryPlacement(q); }));
+      place.push_back(timedMs([&] { sim_.placeBrick(p); }));
+      sim_.removeBrick(p.id);
     }
     row->get_p50 = percentile(get, 0.5), row->get_p99 = percentile(get, 0.99);
     row->query_p50 = percentile(query, 0.5), row->query_p99 = percentile(query, 0.99);
@@ -324,8 +299,8 @@ class NodeBench {
   ros::NodeHandle nh_;
   double window_;
   int pid_;
+  client::SimClient sim_;
   std::vector<std::string> moving_ids_;
-  ros::ServiceClient place_, remove_, get_, query_, push_, reset_, pause_, step_;
 };
 
 /// The scene of a case as a file: towers of 50 planks on a grid centred on
@@ -355,41 +330,85 @@ std::string writeScene(const Case& scene, const std::string& directory) {
   return path;
 }
 
+/// The command line: OUTPUT.csv [--quick] [--delta] [--window SECONDS].
+struct Arguments {
+  std::string output;
+  bool quick = false;
+  bool delta = false;   ///< The node runs with bricks_delta: the busy scenes, one subscriber.
+  double window = 5.0;  ///< [s]
+};
+
+/// False (with the reason on stderr) when the command line is not one.
+bool parseArguments(const std::vector<std::string>& args, Arguments* parsed) {
+  if (args.size() < 2) {
+    std::fprintf(stderr,
+                 "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]\n");
+    return false;
+  }
+  parsed->output = args[1];
+  for (std::size_t i = 2; i < args.size(); ++i) {
+    if (args[i] == "--quick") {
+      parsed->quick = true;
+    } else if (args[i] == "--delta") {
+      parsed->delta = true;
+    } else if (args[i] == "--window" && i + 1 < args.size()) {
+      parsed->window = std::atof(args[++i].c_str());
+    } else {
+      std::fprintf(stderr, "stack_sim_node_bench: unknown argument '%s'\n", args[i].c_str());
+      return false;
+    }
+  }
+  if (!(parsed->window > 0.0 && parsed->window <= 600.0)) {
+    std::fprintf(stderr, "stack_sim_node_bench: --window must be in (0, 600] s\n");
+    return false;
+  }
+  return true;
+}
+
+/// The scenes measured, and with how many subscribers each.
+void planCases(const Arguments& arguments, std::vector<Case>* cases,
+               std::vector<int>* subscriber_counts) {
+  // The 10 moving bricks alone are the yardstick of the settled scenes' cost.
+  *cases = {{0, 10}};
+  for (int bricks :
+       arguments.quick ? std::vector<int>{100, 2000} : std::vector<int>{100, 1000, 2000, 10000})
+    for (int moving : {0, 10}) cases->push_back({bricks, moving});
+  *subscriber_counts = {0, 1, 3};
+  if (arguments.delta) {
+    *cases = arguments.quick ? std::vector<Case>{{2000, 10}}
+                             : std::vector<Case>{{2000, 10}, {10000, 10}};
+    *subscriber_counts = {1};
+  }
+}
+
+void writeCsv(const std::string& path, const std::vector<Row>& rows) {
+  std::ofstream csv(path);
+  csv << "bricks,moving,subscribers,node_cpu,bricks_hz,markers_hz,tf_hz,bricks_bytes,"
+         "markers_bytes,tf_bytes,get_bricks_p50_ms,get_bricks_p99_ms,query_p50_ms,query_p99_ms,"
+         "place_p50_ms,place_p99_ms\n";
+  for (const Row& r : rows) {
+    csv << r.scene.bricks << ',' << r.scene.moving << ',' << r.subscribers << ',' << r.node_cpu
+        << ',' << r.bricks_hz << ',' << r.markers_hz << ',' << r.tf_hz << ',' << r.bricks_bytes
+        << ',' << r.markers_bytes << ',' << r.tf_bytes << ',' << r.get_p50 << ',' << r.get_p99
+        << ',' << r.query_p50 << ',' << r.query_p99 << ',' << r.place_p50 << ',' << r.place_p99
+        << '\n';
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "stack_sim_node_bench", ros::init_options::AnonymousName);
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);
-  if (args.size() < 2) {
-    std::fprintf(stderr,
-                 "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]\n");
-    return 2;
-  }
-  bool quick = false;
-  bool delta = false;  // the node runs with bricks_delta: the busy scenes, one subscriber
-  double window = 5.0;
-  for (std::size_t i = 2; i < args.size(); ++i) {
-    if (args[i] == "--quick") {
-      quick = true;
-    } else if (args[i] == "--delta") {
-      delta = true;
-    } else if (args[i] == "--window" && i + 1 < args.size()) {
-      window = std::atof(args[++i].c_str());
-    } else {
-      std::fprintf(stderr, "stack_sim_node_bench: unknown argument '%s'\n", args[i].c_str());
-      return 2;
-    }
-  }
-  if (!(window > 0.0 && window <= 600.0)) {
-    std::fprintf(stderr, "stack_sim_node_bench: --window must be in (0, 600] s\n");
-    return 2;
-  }
+  Arguments arguments;
+  if (!parseArguments(args, &arguments)) return 2;
   ros::AsyncSpinner spinner(1);
   spinner.start();
-  if (!ros::service::waitForService(kNode + "/step", ros::Duration(30.0))) {
-    std::fprintf(stderr, "stack_sim_node_bench: no node %s (start it with sim.launch)\n",
-                 kNode.c_str());
+  client::SimClient sim;
+  if (const client::CallResult up = sim.waitForNode(30.0); !up.ok) {
+    std::fprintf(stderr, "stack_sim_node_bench: no node %s (start it with sim.launch): %s\n",
+                 kNode.c_str(), up.message.c_str());
     return 1;
   }
   const int pid = nodePid();
@@ -401,31 +420,15 @@ int main(int argc, char** argv) {
   const char* directory = mkdtemp(directory_template);
   if (!directory) return 1;
 
-  // The 10 moving bricks alone are the yardstick of the settled scenes' cost.
-  std::vector<Case> cases{{0, 10}};
-  for (int bricks : quick ? std::vector<int>{100, 2000} : std::vector<int>{100, 1000, 2000, 10000})
-    for (int moving : {0, 10}) cases.push_back({bricks, moving});
-  std::vector<int> subscriber_counts{0, 1, 3};
-  if (delta) {
-    cases = quick ? std::vector<Case>{{2000, 10}} : std::vector<Case>{{2000, 10}, {10000, 10}};
-    subscriber_counts = {1};
-  }
+  std::vector<Case> cases;
+  std::vector<int> subscriber_counts;
+  planCases(arguments, &cases, &subscriber_counts);
   std::vector<Row> rows;
-  NodeBench bench(window, pid);
+  NodeBench bench(arguments.window, pid, std::move(sim));
   int failed = 0;
   for (const Case& scene : cases)
     if (!bench.run(scene, writeScene(scene, directory), subscriber_counts, &rows)) ++failed;
-  std::ofstream csv(args[1]);
-  csv << "bricks,moving,subscribers,node_cpu,bricks_hz,markers_hz,tf_hz,bricks_bytes,"
-         "markers_bytes,tf_bytes,get_bricks_p50_ms,get_bricks_p99_ms,query_p50_ms,query_p99_ms,"
-         "place_p50_ms,place_p99_ms\n";
-  for (const Row& r : rows) {
-    csv << r.scene.bricks << ',' << r.scene.moving << ',' << r.subscribers << ',' << r.node_cpu
-        << ',' << r.bricks_hz << ',' << r.markers_hz << ',' << r.tf_hz << ',' << r.bricks_bytes
-        << ',' << r.markers_bytes << ',' << r.tf_bytes << ',' << r.get_p50 << ',' << r.get_p99
-        << ',' << r.query_p50 << ',' << r.query_p99 << ',' << r.place_p50 << ',' << r.place_p99
-        << '\n';
-  }
+  writeCsv(arguments.output, rows);
   spinner.stop();
   return failed == 0 ? 0 : 1;
 }

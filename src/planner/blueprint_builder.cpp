@@ -3,12 +3,9 @@
 #include <cmath>
 #include <cstdarg>
 
-#include <ros/service.h>
-#include <std_srvs/SetBool.h>
+#include <ros/time.h>
 
-#include "brick_stack_sim/GetBricks.h"
-#include "brick_stack_sim/PlaceBrick.h"
-#include "brick_stack_sim/core/brick_type.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace brick_stack_sim {
@@ -43,6 +40,22 @@ bool isThrown(const ScheduledBrick& brick) {
   return !brick.placement.linear_velocity.isZero() || !brick.placement.angular_velocity.isZero();
 }
 
+/// The client's options: persistent connections, each (re)made within the
+/// builder's service_wait.
+client::ClientOptions clientOptions(const BuilderOptions& options) {
+  client::ClientOptions client;
+  client.sim_namespace = options.sim;
+  client.service_wait = options.service_wait;
+  client.persistent = true;
+  return client;
+}
+
+/// Why a call that was not accepted failed: the simulator's refusal, or why
+/// it was not reached.
+std::string failure(const client::CallResult& reply) {
+  return reply.reached ? reply.service + " refused: " + reply.message : reply.message;
+}
+
 }  // namespace
 
 Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& package_dir,
@@ -71,7 +84,10 @@ Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& 
 }
 
 BlueprintBuilder::BlueprintBuilder(ros::NodeHandle nh, BuilderOptions options, std::FILE* progress)
-    : nh_(nh), options_(std::move(options)), progress_(progress), ledger_(options_.ledger) {}
+    : options_(std::move(options)),
+      progress_(progress),
+      ledger_(options_.ledger),
+      sim_(clientOptions(options_), nh) {}
 
 Status BlueprintBuilder::loadScene(Scene* scene) const {
   BrickTypeLibrary types;
@@ -94,17 +110,8 @@ void BlueprintBuilder::say(const char* format, ...) const {
 }
 
 Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
-  const std::string place_name = options_.sim + "/place_brick";
-  const std::string get_name = options_.sim + "/get_bricks";
-  const std::string pause_name = options_.sim + "/pause";
-  for (const std::string& name : {place_name, get_name, pause_name}) {
-    if (!ros::service::waitForService(name, ros::Duration(options_.service_wait)))
-      return Status::error(name + " did not come up within " +
-                           std::to_string(options_.service_wait) + " s");
-  }
-  place_ = nh_.serviceClient<PlaceBrick>(place_name);
-  get_ = nh_.serviceClient<GetBricks>(get_name);
-  pause_ = nh_.serviceClient<std_srvs::SetBool>(pause_name);
+  if (const client::CallResult up = sim_.waitForNode(options_.service_wait); !up.ok)
+    return Status::error(up.message);
   // With use_sim_time the clock reads 0 until the simulator's first /clock.
   if (!ros::Time::waitForValid(ros::WallDuration(options_.service_wait)))
     return Status::error("no /clock within " + std::to_string(options_.service_wait) +
@@ -152,42 +159,46 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
 Status BlueprintBuilder::placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first,
                                     std::size_t last, std::vector<std::string>* structure) {
   const bool together = last - first > 1;
-  std_srvs::SetBool pause;
-  pause.request.data = true;
-  if (together && (!pause_.call(pause) || !pause.response.success))
-    return Status::error("could not pause the simulator to place bricks together");
+  if (together) {
+    if (const auto paused = sim_.pause(true); !paused.ok)
+      return Status::error("could not pause the simulator to place bricks together: " +
+                           failure(paused));
+  }
   for (std::size_t i = first; i < last; ++i) {
     const BrickPlacement& brick = bricks[i].placement;
-    PlaceBrick place;
-    place.request.id = brick.id;
-    place.request.type = brick.type;
-    place.request.pose = ros_adapter::toPoseMsg(brick.pose);
-    place.request.twist.linear = ros_adapter::toVectorMsg(brick.linear_velocity);
-    place.request.twist.angular = ros_adapter::toVectorMsg(brick.angular_velocity);
-    if (!place_.call(place)) return Status::error("the call to " + place_.getService() + " failed");
-    if (!place.response.success) {
-      ledger_.recordRefused(brick.id, place.response.message);
-      say("%s refused: %s", brick.id.c_str(), place.response.message.c_str());
+    PlaceBrick::Request request;
+    request.id = brick.id;
+    request.type = brick.type;
+    request.pose = ros_adapter::toPoseMsg(brick.pose);
+    request.twist.linear = ros_adapter::toVectorMsg(brick.linear_velocity);
+    request.twist.angular = ros_adapter::toVectorMsg(brick.angular_velocity);
+    const client::Reply<PlaceBrick::Response> place = sim_.placeBrick(request);
+    if (!place.reached) return Status::error(place.message);
+    if (!place.ok) {
+      ledger_.recordRefused(brick.id, place.message);
+      say("%s refused: %s", brick.id.c_str(), place.message.c_str());
       continue;
     }
+    const std::string& id = place.response.id;
     const bool thrown = isThrown(bricks[i]);
-    ledger_.recordPlaced(place.response.id, brick.pose, clock(ros::Time::now()), thrown);
-    if (!thrown) structure->push_back(place.response.id);
+    ledger_.recordPlaced(id, brick.pose, clock(ros::Time::now()), thrown);
+    if (!thrown) structure->push_back(id);
     if (thrown)
-      say("threw %s at %.2f m/s", place.response.id.c_str(), brick.linear_velocity.norm());
+      say("threw %s at %.2f m/s", id.c_str(), brick.linear_velocity.norm());
     else
-      say("placed %s (%zu/%zu)", place.response.id.c_str(), i + 1, bricks.size());
+      say("placed %s (%zu/%zu)", id.c_str(), i + 1, bricks.size());
   }
-  pause.request.data = false;
-  if (together && (!pause_.call(pause) || !pause.response.success))
-    return Status::error("could not resume the simulator after placing bricks together");
+  if (together) {
+    if (const auto resumed = sim_.pause(false); !resumed.ok)
+      return Status::error("could not resume the simulator after placing bricks together: " +
+                           failure(resumed));
+  }
   return Status::success();
 }
 
 Status BlueprintBuilder::observe() {
-  GetBricks get;
-  if (!get_.call(get) || !get.response.success)
-    return Status::error("the call to " + get_.getService() + " failed");
+  const client::Reply<GetBricks::Response> get = sim_.getBricks();
+  if (!get.ok) return Status::error(failure(get));
   std::vector<ObservedBrick> observed;
   observed.reserve(get.response.bricks.size());
   for (const Brick& brick : get.response.bricks) observed.push_back(toObserved(brick));

@@ -7,6 +7,7 @@
 #include <ros/ros.h>
 
 #include "brick_stack_sim/core/options/options_reader.h"
+#include "brick_stack_sim/ros/interface_names.h"
 #include "brick_stack_sim/ros/node_options.h"
 #include "util/validation.h"
 
@@ -32,8 +33,8 @@ Status validate(const TeleopOptions& o) {
   std::string error;
   if (o.sim.empty() || !ros::names::validate(o.sim, error))
     return bad("sim", "'" + o.sim + "'",
-               "must be the simulator's namespace, e.g. /brick_sim" +
-                   (error.empty() ? "" : " (" + error + ")"));
+               std::string("must be the simulator's namespace, e.g. ") +
+                   ros_adapter::kDefaultNamespace + (error.empty() ? "" : " (" + error + ")"));
   if (!o.initial_position.allFinite() || o.initial_position.z() < kTableTop)
     return bad("initial_position", o.initial_position.transpose(),
                "must be finite [m], z at or above the table top (0)");

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/ros/interface_names.h"
 #include "brick_stack_sim/teleop/teleop_options.h"
 
 namespace {
@@ -35,7 +36,7 @@ void expectKeyboardRefused(const std::string& name, const ParameterValue& value)
 TEST(TeleopOptions, NoParametersKeepTheDefaults) {
   KeyboardOptions keyboard;
   ASSERT_TRUE(loadKeyboardOptions(ParameterValue(), &keyboard).ok);
-  EXPECT_EQ(keyboard.teleop.sim, "/brick_sim");
+  EXPECT_EQ(keyboard.teleop.sim, ros_adapter::kDefaultNamespace);
   EXPECT_EQ(keyboard.steps.linear, 0.005);
   PlacerOptions placer;
   ASSERT_TRUE(loadPlacerOptions(ParameterValue(), &placer).ok);

@@ -9,28 +9,32 @@
 #include <vector>
 
 #include <ros/node_handle.h>
-#include <ros/service_client.h>
 
+#include "brick_stack_sim/client/sim_client.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/planner/build_ledger.h"
+#include "brick_stack_sim/ros/interface_names.h"
 
 namespace brick_stack_sim {
 namespace planner {
 
-/// The builder's private parameters (README, "blueprint_builder").
+/// The builder's private parameters (docs/ros_interface.md, "blueprint_builder").
 struct BuilderOptions {
   std::string scene;  ///< A name in `scene_dirs` or a path.
   std::vector<std::string> scene_dirs;
-  std::string sim = "/brick_sim";  ///< Namespace of the simulator's services.
-  std::string types_urdf;          ///< Brick types; must be the simulator's.
+  /// Namespace of the simulator's services.
+  std::string sim = ros_adapter::kDefaultNamespace;
+  std::string types_urdf;  ///< Brick types; must be the simulator's.
   std::string materials_yaml;
   /// How long past its placement a brick may take to come to rest [s] (sim
   /// time) before the builder goes on without it and says so.
   double settle_timeout = 3.0;
-  double final_wait = 3.0;     ///< Watched after the last placement [s] (sim time).
-  double poll_period = 0.1;    ///< Between two looks at ~get_bricks [s] (sim time).
-  double service_wait = 60.0;  ///< For the simulator's services to come up [s] (wall time).
+  double final_wait = 3.0;   ///< Watched after the last placement [s] (sim time).
+  double poll_period = 0.1;  ///< Between two looks at ~get_bricks [s] (sim time).
+  /// For the simulator's services to come up [s] (wall time), at the start
+  /// and whenever a connection to one has to be made again.
+  double service_wait = 60.0;
   LedgerOptions ledger;
 };
 
@@ -50,7 +54,8 @@ struct BuildOutcome {
 
 class BlueprintBuilder {
  public:
-  /// Progress goes to `progress` (one line per event).
+  /// Progress goes to `progress` (one line per event). The simulator is
+  /// reached through `nh` with persistent connections.
   BlueprintBuilder(ros::NodeHandle nh, BuilderOptions options, std::FILE* progress = stdout);
 
   /// Loads options.scene with the options' brick types.
@@ -81,11 +86,10 @@ class BlueprintBuilder {
   double clock(const ros::Time& t) const;
   void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
 
-  ros::NodeHandle nh_;
   BuilderOptions options_;
   std::FILE* progress_;
   BuildLedger ledger_;
-  ros::ServiceClient place_, get_, pause_;
+  client::SimClient sim_;
   ros::Time next_observation_;
   ros::Time epoch_;  ///< 0 on sim time; the build's start on wall time.
 };

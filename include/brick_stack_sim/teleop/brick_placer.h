@@ -11,8 +11,8 @@
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <Eigen/Geometry>
 
-#include "brick_stack_sim/core/brick_type.h"
-#include "brick_stack_sim/teleop/sim_client.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/teleop/sim_session.h"
 #include "brick_stack_sim/teleop/teleop_options.h"
 
 namespace brick_stack_sim {
@@ -83,7 +83,7 @@ class BrickPlacer {
   Eigen::Vector3d held_size_ = Eigen::Vector3d::Zero();  ///< Full extents of the held brick [m].
 
   ros::NodeHandle node_handle_;
-  SimClient sim_;
+  SimSession sim_;
   interactive_markers::InteractiveMarkerServer server_;
   interactive_markers::MenuHandler menu_;
   std::map<std::string, interactive_markers::MenuHandler::EntryHandle> type_entries_;

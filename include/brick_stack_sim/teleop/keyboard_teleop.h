@@ -4,7 +4,7 @@
 
 #include "brick_stack_sim/teleop/keyboard_command.h"
 #include "brick_stack_sim/teleop/raw_terminal.h"
-#include "brick_stack_sim/teleop/sim_client.h"
+#include "brick_stack_sim/teleop/sim_session.h"
 #include "brick_stack_sim/teleop/teleop_options.h"
 
 namespace brick_stack_sim {
@@ -33,7 +33,7 @@ class KeyboardTeleop {
 
   KeyboardOptions options_;
   ros::NodeHandle node_handle_;
-  SimClient sim_;
+  SimSession sim_;
   Cursor cursor_;
   ros::Publisher cursor_marker_;
 };

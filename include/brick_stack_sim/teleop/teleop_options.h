@@ -8,9 +8,10 @@
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/brick_type.h"
 #include "brick_stack_sim/core/options/parameter_value.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/ros/interface_names.h"
 #include "brick_stack_sim/teleop/keyboard_command.h"
 
 namespace brick_stack_sim {
@@ -18,7 +19,7 @@ namespace teleop {
 
 /// What both teleop nodes read.
 struct TeleopOptions {
-  std::string sim = "/brick_sim";  ///< The simulator's private namespace.
+  std::string sim = ros_adapter::kDefaultNamespace;  ///< The simulator's private namespace.
   /// Where the ghost or cursor starts [m], frame world: above the table's centre.
   Eigen::Vector3d initial_position = Eigen::Vector3d(0.0, 0.0, 0.1);
   double initial_yaw = 0.0;    ///< [rad] about world z.

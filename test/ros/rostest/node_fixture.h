@@ -1,8 +1,9 @@
 #pragma once
-// The base fixture of the rostests that drive a running node through its
-// services: it waits for the node, holds one client per service and wraps the
-// calls the tests share. Each test file derives its own fixture, which brings
-// the node to its starting state in SetUp.
+// The base fixture of the rostests that drive a running node: a thin gtest
+// layer over client::SimClient. It waits for the node, holds the client and
+// wraps the calls the tests share, each expecting that the call reached the
+// node. Each test file derives its own fixture, which brings the node to its
+// starting state in SetUp.
 
 #include <chrono>
 #include <cmath>
@@ -15,63 +16,95 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
-#include <std_srvs/SetBool.h>
+#include <ros/service_traits.h>
 
-#include "brick_stack_sim/GetBricks.h"
-#include "brick_stack_sim/PlaceBrick.h"
-#include "brick_stack_sim/PushBrick.h"
-#include "brick_stack_sim/QueryPlacement.h"
-#include "brick_stack_sim/RemoveBrick.h"
-#include "brick_stack_sim/ResetScene.h"
-#include "brick_stack_sim/StepSimulation.h"
+#include "brick_stack_sim/client/sim_client.h"
 
 namespace brick_stack_sim {
 namespace test {
 
-/// Calls `client` from a thread of its own and waits at most `seconds` [s]:
-/// a rospy or roscpp call has no timeout, and a node that never answers must
-/// fail the test instead of hanging it. False when the call failed or did not
-/// come back in time (the thread is then left behind; the test ends anyway).
+/// The node's response in `reply`, expecting that the call reached the node.
+template <typename Response>
+Response expectReached(const client::Reply<Response>& reply) {
+  EXPECT_TRUE(reply.reached) << reply.message;
+  return reply.response;
+}
+
+// `request` through the client's method for its service: a test that builds
+// a request field by field sends it whole.
+inline client::Reply<PlaceBrick::Response> send(client::SimClient& sim,
+                                                const PlaceBrick::Request& request) {
+  return sim.placeBrick(request);
+}
+inline client::Reply<RemoveBrick::Response> send(client::SimClient& sim,
+                                                 const RemoveBrick::Request& request) {
+  return sim.removeBrick(request.id);
+}
+inline client::Reply<ResetScene::Response> send(client::SimClient& sim,
+                                                const ResetScene::Request& request) {
+  return sim.reset(request.scene);
+}
+inline client::Reply<GetBricks::Response> send(client::SimClient& sim,
+                                               const GetBricks::Request& request) {
+  return sim.getBricks(request.ids);
+}
+inline client::Reply<PushBrick::Response> send(client::SimClient& sim,
+                                               const PushBrick::Request& request) {
+  return sim.pushBrick(request);
+}
+inline client::Reply<QueryPlacement::Response> send(client::SimClient& sim,
+                                                    const QueryPlacement::Request& request) {
+  return sim.queryPlacement(request);
+}
+inline client::Reply<std_srvs::SetBool::Response> send(client::SimClient& sim,
+                                                       const std_srvs::SetBool::Request& request) {
+  return sim.pause(request.data);
+}
+inline client::Reply<StepSimulation::Response> send(client::SimClient& sim,
+                                                    const StepSimulation::Request& request) {
+  return sim.step(request.steps);
+}
+inline client::Reply<GraspBrick::Response> send(client::SimClient& sim,
+                                                const GraspBrick::Request& request) {
+  return sim.graspBrick(request.id);
+}
+inline client::Reply<ReleaseBrick::Response> send(client::SimClient& sim,
+                                                  const ReleaseBrick::Request& request) {
+  return sim.releaseBrick(request.id, request.twist);
+}
+
+/// Sends `srv.request` through `sim` from a thread of its own and waits at
+/// most `seconds` [s] for the answer (into `srv.response`): a roscpp call has
+/// no timeout, and a node that never answers must fail the test instead of
+/// hanging it. The caller does not use `sim` meanwhile. False when the call
+/// did not reach the node or did not come back in time (the thread is then
+/// left behind, holding `sim`; the test ends anyway).
 template <typename Service>
-bool callWithin(ros::ServiceClient& client, Service& srv, double seconds) {
-  auto answer = std::make_shared<std::promise<bool>>();
-  std::future<bool> done = answer->get_future();
-  auto shared = std::make_shared<Service>(srv);
-  std::thread([client, shared, answer]() mutable {
-    answer->set_value(client.call(*shared));
+bool callWithin(const std::shared_ptr<client::SimClient>& sim, Service& srv, double seconds) {
+  using Reply = decltype(send(*sim, srv.request));
+  auto answer = std::make_shared<std::promise<Reply>>();
+  std::future<Reply> done = answer->get_future();
+  std::thread([sim, request = srv.request, answer] {
+    answer->set_value(send(*sim, request));
   }).detach();
   if (done.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) {
-    ADD_FAILURE() << client.getService() << " did not answer within " << seconds << " s";
+    ADD_FAILURE() << ros::service_traits::datatype<Service>() << " did not answer within "
+                  << seconds << " s";
     return false;
   }
-  const bool called = done.get();
-  EXPECT_TRUE(called) << "call to " << client.getService() << " failed";
-  srv = *shared;
-  return called;
+  const Reply reply = done.get();
+  EXPECT_TRUE(reply.reached) << reply.message;
+  srv.response = reply.response;
+  return reply.reached;
 }
 
 class NodeFixture : public ::testing::Test {
  protected:
-  /// Waits for the node and connects the clients. A derived SetUp calls this
-  /// first and returns if HasFatalFailure().
+  /// Waits for the node. A derived SetUp calls this first and returns if
+  /// HasFatalFailure().
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService("/brick_sim/step", ros::Duration(60.0)))
-        << "the node did not come up";
-    connectClients(false);
-  }
-
-  /// Persistent clients keep one connection each: a test of thousands of
-  /// calls needs them, since roscpp's one-connection-per-call clients fail
-  /// now and then under load (ros/ros_comm#1976), which is not the node's doing.
-  void connectClients(bool persistent) {
-    place_ = nh_.serviceClient<PlaceBrick>("/brick_sim/place_brick", persistent);
-    remove_ = nh_.serviceClient<RemoveBrick>("/brick_sim/remove_brick", persistent);
-    reset_ = nh_.serviceClient<ResetScene>("/brick_sim/reset", persistent);
-    get_ = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks", persistent);
-    push_ = nh_.serviceClient<PushBrick>("/brick_sim/push_brick", persistent);
-    pause_ = nh_.serviceClient<std_srvs::SetBool>("/brick_sim/pause", persistent);
-    step_ = nh_.serviceClient<StepSimulation>("/brick_sim/step", persistent);
-    query_ = nh_.serviceClient<QueryPlacement>("/brick_sim/query_placement", persistent);
+    const client::CallResult up = sim_->waitForNode(60.0);
+    ASSERT_TRUE(up.ok) << "the node did not come up: " << up.message;
   }
 
   /// Polls `done` for up to `seconds` of wall time (callbacks run in the spinner).
@@ -94,36 +127,33 @@ class NodeFixture : public ::testing::Test {
     srv.request.pose.position.z = z;
     srv.request.pose.orientation.z = std::sin(yaw / 2);
     srv.request.pose.orientation.w = std::cos(yaw / 2);
-    return call(place_, srv);
+    return call(srv);
   }
 
+  /// Sends `srv.request` and returns the answer, also left in `srv.response`.
   template <typename Service>
-  typename Service::Response call(ros::ServiceClient& client, Service& srv) {
-    EXPECT_TRUE(client.call(srv)) << "call to " << client.getService() << " failed";
+  typename Service::Response call(Service& srv) {
+    srv.response = expectReached(send(*sim_, srv.request));
     return srv.response;
   }
 
   std::vector<Brick> bricks() {
-    GetBricks srv;
-    EXPECT_TRUE(get_.call(srv));
-    EXPECT_TRUE(srv.response.success) << srv.response.message;
-    return srv.response.bricks;
+    const client::Reply<GetBricks::Response> reply = sim_->getBricks();
+    EXPECT_TRUE(reply.reached) << reply.message;
+    EXPECT_TRUE(reply.response.success) << reply.response.message;
+    return reply.response.bricks;
   }
 
-  bool setPaused(bool paused) {
-    std_srvs::SetBool srv;
-    srv.request.data = paused;
-    return pause_.call(srv) && srv.response.success;
-  }
+  bool setPaused(bool paused) { return sim_->pause(paused).ok; }
 
-  StepSimulation::Response step(unsigned steps) {
-    StepSimulation srv;
-    srv.request.steps = steps;
-    return call(step_, srv);
-  }
+  StepSimulation::Response step(unsigned steps) { return expectReached(sim_->step(steps)); }
 
   ros::NodeHandle nh_;
-  ros::ServiceClient place_, remove_, reset_, get_, push_, pause_, step_, query_;
+  /// The node's services and topics, with persistent connections: a test of
+  /// thousands of calls needs them, since roscpp's one-connection-per-call
+  /// clients fail now and then under load, which is not the node's doing.
+  /// Shared with the threads of callWithin.
+  std::shared_ptr<client::SimClient> sim_ = std::make_shared<client::SimClient>();
 };
 
 /// The main() of a rostest gtest node named `node_name`: service calls are

@@ -17,7 +17,6 @@
 #include <visualization_msgs/InteractiveMarkerInit.h>
 #include <visualization_msgs/InteractiveMarkerUpdate.h>
 
-#include "brick_stack_sim/GraspBrick.h"
 #include "brick_stack_sim/teleop/brick_placer.h"
 #include "node_fixture.h"
 #include "support/kapla.h"
@@ -88,8 +87,8 @@ class BrickPlacer : public test::NodeFixture {
     // Every test starts from a running simulator, an empty table and the
     // placer's ghost of type kapla.
     ASSERT_TRUE(setPaused(false));
-    ResetScene reset;
-    ASSERT_TRUE(reset_.call(reset));
+    const client::Reply<ResetScene::Response> reset = sim_->reset();
+    ASSERT_TRUE(reset.reached) << reset.message;
     ASSERT_TRUE(reset.response.success) << reset.response.message;
     select("kapla", pose(0.0, 0.0, 0.1), teleop::kTypeMenu);
   }
@@ -272,7 +271,7 @@ TEST_F(BrickPlacer, ARefusalIsShownWithTheSimulatorsMessage) {
   PlaceBrick direct;
   direct.request.type = "kapla";
   direct.request.pose = pose(0.0, 0.2, 0.5 * kThickness);
-  ASSERT_FALSE(call(place_, direct).success);
+  ASSERT_FALSE(call(direct).success);
   ASSERT_FALSE(direct.response.message.empty());
 
   select(teleop::kDropFromHereEntry, pose(0.0, 0.2, 0.5 * kThickness));
@@ -345,8 +344,7 @@ TEST_F(BrickPlacer, AGraspRefusalIsShownWithTheSimulatorsMessage) {
   ASSERT_TRUE(waitForBrick("top", [](const Brick& b) { return b.state == Brick::STABLE; }));
   GraspBrick direct;
   direct.request.id = "bottom";
-  ros::ServiceClient grasp = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick");
-  ASSERT_FALSE(call(grasp, direct).success);
+  ASSERT_FALSE(call(direct).success);
   ASSERT_FALSE(direct.response.message.empty());
 
   // Nearer "bottom" (3.9 mm) than "top" (11.7 mm).

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
+#include "brick_stack_sim/ros/interface_names.h"
 #include "node_fixture.h"
 
 namespace {
@@ -55,15 +57,11 @@ std::string withoutTime(const std::string& message) {
 /// One client: its own connections, its own region, its own ids.
 class Client {
  public:
-  Client(ros::NodeHandle& nh, int index) : index_(index) {
-    // Persistent, as a planner calling this often should be: roscpp's
-    // one-connection-per-call clients fail now and then when many calls
-    // overlap (the server drops the connection on POLLRDHUP before it
-    // answers, ros/ros_comm#1976), about once in ten runs of this test.
-    place_ = nh.serviceClient<PlaceBrick>("/brick_sim/place_brick", true);
-    remove_ = nh.serviceClient<RemoveBrick>("/brick_sim/remove_brick", true);
-    get_ = nh.serviceClient<GetBricks>("/brick_sim/get_bricks", true);
-    query_ = nh.serviceClient<QueryPlacement>("/brick_sim/query_placement", true);
+  // The client library's persistent connections, as a planner calling this
+  // often should have: roscpp's one-connection-per-call clients fail now and
+  // then when many calls overlap (the server drops the connection on
+  // POLLRDHUP before it answers), about once in ten runs of this test.
+  explicit Client(int index) : index_(index), sim_(std::make_shared<client::SimClient>()) {
     // Eight regions 0.3 m by 0.4 m on the 1.2 m by 0.8 m table.
     x_ = -0.45 + 0.3 * (index % 4);
     y_ = index < 4 ? -0.2 : 0.2;
@@ -110,9 +108,9 @@ class Client {
   std::string name() const { return "c" + std::to_string(index_); }
 
   template <typename Service>
-  bool call(ros::ServiceClient& client, Service& srv) {
+  bool call(Service& srv) {
     if (hung_) return false;
-    hung_ = !test::callWithin(client, srv, kCallTimeout);
+    hung_ = !test::callWithin(sim_, srv, kCallTimeout);
     return !hung_;
   }
 
@@ -133,7 +131,7 @@ class Client {
     srv.request.pose = layerPose(x, y, z, layer);
     Answer answer;
     answer.call = "place " + id;
-    if (!call(place_, srv)) return answer;
+    if (!call(srv)) return answer;
     answer.success = srv.response.success;
     answer.message = withoutTime(srv.response.message);
     answer.id = srv.response.id;
@@ -147,7 +145,7 @@ class Client {
     std::ostringstream what;
     what << "query at (" << x << ", " << y << ", " << z << ")";
     answer.call = what.str();
-    if (!call(query_, srv)) return answer;
+    if (!call(srv)) return answer;
     answer.success = srv.response.success;
     answer.stable = srv.response.stable;
     answer.margin = srv.response.margin;
@@ -161,7 +159,7 @@ class Client {
     srv.request.id = id;
     Answer answer;
     answer.call = "remove " + id;
-    if (!call(remove_, srv)) return answer;
+    if (!call(srv)) return answer;
     answer.success = srv.response.success;
     answer.message = withoutTime(srv.response.message);
     return answer;
@@ -170,8 +168,8 @@ class Client {
   Answer ownBricks() {
     GetBricks srv;
     Answer answer;
-    answer.call = "get_bricks";
-    if (!call(get_, srv)) return answer;
+    answer.call = ros_adapter::kGetBricksService;
+    if (!call(srv)) return answer;
     answer.success = srv.response.success;
     for (const Brick& brick : srv.response.bricks)
       if (brick.id.rfind(name() + "_", 0) == 0) answer.own_bricks.push_back(brick.id);
@@ -182,7 +180,8 @@ class Client {
   int index_;
   double x_ = 0.0, y_ = 0.0;
   bool hung_ = false;
-  ros::ServiceClient place_, remove_, get_, query_;
+  /// Shared with the threads of test::callWithin only.
+  std::shared_ptr<client::SimClient> sim_;
 };
 
 class ConcurrentClients : public test::NodeFixture {
@@ -197,7 +196,7 @@ class ConcurrentClients : public test::NodeFixture {
 
   void clearTable() {
     ResetScene clear;
-    ASSERT_TRUE(test::callWithin(reset_, clear, kCallTimeout));
+    ASSERT_TRUE(test::callWithin(sim_, clear, kCallTimeout));
     ASSERT_TRUE(clear.response.success) << clear.response.message;
   }
 
@@ -215,14 +214,14 @@ class ConcurrentClients : public test::NodeFixture {
 TEST_F(ConcurrentClients, AnswersEqualThoseOfTheSameCallsOneAtATime) {
   clearTable();
   std::vector<Client> clients;
-  for (int i = 0; i < kClients; ++i) clients.emplace_back(nh_, i);
+  for (int i = 0; i < kClients; ++i) clients.emplace_back(i);
 
   std::vector<std::vector<Answer>> together(kClients);
   std::atomic<bool> clients_done{false};
   std::atomic<long> steps_taken{0};
   std::atomic<int> step_refusals{0};
   std::thread stepper([&] {
-    ros::ServiceClient step_client = nh_.serviceClient<StepSimulation>("/brick_sim/step", true);
+    const auto step_client = std::make_shared<client::SimClient>();
     while (!clients_done) {
       StepSimulation srv;
       srv.request.steps = static_cast<unsigned>(steps_per_call_);
@@ -250,7 +249,7 @@ TEST_F(ConcurrentClients, AnswersEqualThoseOfTheSameCallsOneAtATime) {
   clearTable();
   std::vector<std::vector<Answer>> alone(kClients);
   for (int i = 0; i < kClients; ++i) {
-    Client client(nh_, i);
+    Client client(i);
     alone[i] = client.run(rounds_);
     ASSERT_FALSE(client.hung()) << "the node stopped answering";
   }

@@ -1,4 +1,4 @@
-// The ROS conventions users rely on (issue 10): a paused node keeps
+// The ROS conventions users rely on: a paused node keeps
 // publishing /clock and ~bricks, so a client that joins while it is paused
 // sees the clock standing still and every brick; with publish_clock,
 // sim.launch sets /use_sim_time and every stamp (~bricks, ~markers, ~events,
@@ -19,9 +19,8 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/BrickArray.h"
-#include "brick_stack_sim/StabilityEvent.h"
-#include "ros/node_fixture.h"
+#include "brick_stack_sim/ros/interface_names.h"
+#include "node_fixture.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -36,17 +35,19 @@ TEST_F(ConventionsNode, ClockAndBricksKeepArrivingWhilePaused) {
   std::vector<double> clocks;
   std::optional<BrickArray> last_bricks;
   int bricks_received = 0;
-  ros::Subscriber clock_sub = nh_.subscribe<rosgraph_msgs::Clock>(
-      "/clock", 100, [&](const rosgraph_msgs::Clock::ConstPtr& msg) {
+  ros::Subscriber clock_sub = sim_->subscribeClock(
+      [&](const rosgraph_msgs::Clock::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         clocks.push_back(msg->clock.toSec());
-      });
-  ros::Subscriber bricks_sub =
-      nh_.subscribe<BrickArray>("/brick_sim/bricks", 100, [&](const BrickArray::ConstPtr& msg) {
+      },
+      100);
+  ros::Subscriber bricks_sub = sim_->subscribeBricks(
+      [&](const BrickArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         last_bricks = *msg;
         ++bricks_received;
-      });
+      },
+      100);
   const bool arrived = waitFor(
       [&] {
         std::lock_guard<std::mutex> lock(mutex);
@@ -75,7 +76,7 @@ TEST_F(ConventionsNode, PublishClockSetsUseSimTimeAndEveryStampIsSimTime) {
   // within one period of the latest /clock whichever arrives first. Wall
   // time would be ~1.8e9 s away from a sim clock that started at 0.
   double publish_rate = 0.0;
-  ASSERT_TRUE(ros::param::get("/brick_sim/publish_rate", publish_rate));
+  ASSERT_TRUE(ros::param::get(sim_->resolve(ros_adapter::kPublishRateParameter), publish_rate));
   const double period = 1.0 / publish_rate + 1e-6;  // and rounding
   ASSERT_TRUE(setPaused(false));
   std::mutex mutex;
@@ -91,21 +92,21 @@ TEST_F(ConventionsNode, PublishClockSetsUseSimTimeAndEveryStampIsSimTime) {
     worst[topic] = std::max(worst[topic], std::abs(stamp.toSec() - clock));
     ++received[topic];
   };
-  ros::Subscriber clock_sub = nh_.subscribe<rosgraph_msgs::Clock>(
-      "/clock", 100, [&](const rosgraph_msgs::Clock::ConstPtr& msg) {
+  ros::Subscriber clock_sub = sim_->subscribeClock(
+      [&](const rosgraph_msgs::Clock::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         clock = msg->clock.toSec();
-      });
-  ros::Subscriber bricks_sub = nh_.subscribe<BrickArray>(
-      "/brick_sim/bricks", 100,
-      [&](const BrickArray::ConstPtr& msg) { note("bricks", msg->header.stamp); });
-  ros::Subscriber markers_sub = nh_.subscribe<visualization_msgs::MarkerArray>(
-      "/brick_sim/markers", 100, [&](const visualization_msgs::MarkerArray::ConstPtr& msg) {
+      },
+      100);
+  ros::Subscriber bricks_sub = sim_->subscribeBricks(
+      [&](const BrickArray::ConstPtr& msg) { note("bricks", msg->header.stamp); }, 100);
+  ros::Subscriber markers_sub = sim_->subscribeMarkers(
+      [&](const visualization_msgs::MarkerArray::ConstPtr& msg) {
         for (const auto& marker : msg->markers) note("markers", marker.header.stamp);
-      });
-  ros::Subscriber events_sub = nh_.subscribe<StabilityEvent>(
-      "/brick_sim/events", 100,
-      [&](const StabilityEvent::ConstPtr& msg) { note("events", msg->header.stamp); });
+      },
+      100);
+  ros::Subscriber events_sub = sim_->subscribeEvents(
+      [&](const StabilityEvent::ConstPtr& msg) { note("events", msg->header.stamp); }, 100);
   ros::Subscriber tf_sub =
       nh_.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
         for (const auto& transform : msg->transforms) note("tf", transform.header.stamp);
@@ -141,8 +142,8 @@ TEST_F(ConventionsNode, PublishClockSetsUseSimTimeAndEveryStampIsSimTime) {
     EXPECT_LE(table_stamp->toSec(), clock) << "the table frame on /tf_static";
   }
   // A service response: compared with the latest /clock once it is back.
-  GetBricks get;
-  ASSERT_TRUE(get_.call(get));
+  const client::Reply<GetBricks::Response> get = sim_->getBricks();
+  ASSERT_TRUE(get.reached) << get.message;
   std::lock_guard<std::mutex> lock(mutex);
   EXPECT_LE(std::abs(get.response.header.stamp.toSec() - clock), period) << "~get_bricks";
 }

@@ -12,8 +12,7 @@
 #include <ros/package.h>
 #include <ros/ros.h>
 
-#include "brick_stack_sim/GetBricks.h"
-#include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/client/sim_client.h"
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/planner/blueprint_builder.h"
 
@@ -28,11 +27,11 @@ class DemoScenes : public ::testing::Test {
     ros::NodeHandle private_nh("~");
     private_nh.param<std::string>("mode", mode_, "com");
     private_nh.param<std::string>("fixtures", fixtures_, "");
-    ASSERT_TRUE(ros::service::waitForService("/brick_sim/reset", ros::Duration(60.0)));
+    const client::CallResult up = sim_.waitForNode(60.0);
+    ASSERT_TRUE(up.ok) << up.message;
     ASSERT_TRUE(ros::Time::waitForValid(ros::WallDuration(30.0))) << "no /clock";
-    ResetScene reset;
-    ASSERT_TRUE(ros::service::call("/brick_sim/reset", reset) && reset.response.success)
-        << "could not clear the table";
+    const client::Reply<ResetScene::Response> reset = sim_.reset();
+    ASSERT_TRUE(reset.ok) << "could not clear the table: " << reset.message;
   }
 
   bool asserting() const { return mode_ != "none"; }
@@ -64,8 +63,8 @@ class DemoScenes : public ::testing::Test {
 
   /// Distance [m] of every brick of the scene from where the scene put it.
   std::map<std::string, double> displacements(const Scene& scene) {
-    GetBricks get;
-    EXPECT_TRUE(ros::service::call("/brick_sim/get_bricks", get) && get.response.success);
+    const client::Reply<GetBricks::Response> get = sim_.getBricks();
+    EXPECT_TRUE(get.ok) << get.message;
     std::map<std::string, double> moved;
     for (const ScheduledBrick& planned : scene.bricks) {
       moved[planned.placement.id] = INFINITY;  // removed or never placed
@@ -80,6 +79,7 @@ class DemoScenes : public ::testing::Test {
   }
 
   std::string mode_, fixtures_;
+  client::SimClient sim_;
   std::optional<planner::BlueprintBuilder> builder_;
 };
 

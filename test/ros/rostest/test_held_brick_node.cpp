@@ -1,5 +1,5 @@
-// Held bricks through the node (issue 9): ~grasp_brick, ~held_target,
-// ~release_brick and ~push_brick, against a running node in mode com.
+// Held bricks through the node: ~grasp_brick, ~held_target, ~release_brick
+// and ~push_brick, against a running node in mode com.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -9,9 +9,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
-#include "brick_stack_sim/GraspBrick.h"
-#include "brick_stack_sim/ReleaseBrick.h"
-#include "ros/node_fixture.h"
+#include "node_fixture.h"
 #include "support/kapla.h"
 
 namespace brick_stack_sim {
@@ -24,13 +22,11 @@ class HeldBrickNode : public test::NodeFixture {
   void SetUp() override {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
-    grasp_ = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick");
-    release_ = nh_.serviceClient<ReleaseBrick>("/brick_sim/release_brick");
-    target_ = nh_.advertise<geometry_msgs::PoseStamped>("/brick_sim/held_target", 10);
+    const ros::Publisher& target = sim_->advertiseHeldTarget();
     ASSERT_TRUE(setPaused(true));
     ResetScene reset;
-    ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
-    ASSERT_TRUE(waitFor([this] { return target_.getNumSubscribers() > 0; }, 10.0))
+    ASSERT_TRUE(call(reset).success) << reset.response.message;
+    ASSERT_TRUE(waitFor([&target] { return target.getNumSubscribers() > 0; }, 10.0))
         << "the node does not subscribe to ~held_target";
   }
 
@@ -48,14 +44,14 @@ class HeldBrickNode : public test::NodeFixture {
   GraspBrick::Response grasp(const std::string& id) {
     GraspBrick srv;
     srv.request.id = id;
-    return call(grasp_, srv);
+    return call(srv);
   }
 
   ReleaseBrick::Response release(const std::string& id, double vx = 0.0) {
     ReleaseBrick srv;
     srv.request.id = id;
     srv.request.twist.linear.x = vx;
-    return call(release_, srv);
+    return call(srv);
   }
 
   /// Publishes a target and gives the node time to take it before the next
@@ -68,7 +64,7 @@ class HeldBrickNode : public test::NodeFixture {
     target.pose.position.z = z;
     target.pose.orientation.z = std::sin(yaw / 2);
     target.pose.orientation.w = std::cos(yaw / 2);
-    target_.publish(target);
+    sim_->publishHeldTarget(target);
     ros::WallDuration(0.05).sleep();
   }
 
@@ -82,9 +78,6 @@ class HeldBrickNode : public test::NodeFixture {
   static double distance(const geometry_msgs::Point& a, double x, double y, double z) {
     return std::sqrt((a.x - x) * (a.x - x) + (a.y - y) * (a.y - y) + (a.z - z) * (a.z - z));
   }
-
-  ros::ServiceClient grasp_, release_;
-  ros::Publisher target_;
 };
 
 TEST_F(HeldBrickNode, CarriedSlowlyOntoATowerAndReleasedItEndsFrozenOnIt) {
@@ -158,7 +151,7 @@ TEST_F(HeldBrickNode, BadRequestsAreRefusedWithAMessageAndChangeNothing) {
   push.request.id = "loose";
   push.request.impulse.x = 1e-3;
   push.request.point.x = 1.0;  // a metre off: outside the brick
-  refused(call(push_, push).success, push.response.message, "outside brick");
+  refused(call(push).success, push.response.message, "outside brick");
   EXPECT_EQ(bricks(), before);
 
   ASSERT_TRUE(grasp("loose").success);
@@ -183,7 +176,7 @@ TEST_F(HeldBrickNode, PushWithoutAPointActsAtTheBricksCentre) {
   PushBrick push;
   push.request.id = "pushed";
   push.request.impulse.y = 0.0119 * 0.3;  // 0.3 m/s along y, point left empty
-  ASSERT_TRUE(call(push_, push).success) << push.response.message;
+  ASSERT_TRUE(call(push).success) << push.response.message;
   step(1);
   const Brick moving = brick("pushed");
   EXPECT_GT(moving.twist.linear.y, 0.2);

@@ -13,7 +13,6 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "brick_stack_sim/BrickArray.h"
 #include "node_fixture.h"
 
 namespace {
@@ -28,9 +27,8 @@ class NodeCost : public test::NodeFixture {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
     ASSERT_TRUE(setPaused(true));
-    ResetScene reset;
-    reset.request.scene = "tower10";
-    ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+    const client::Reply<ResetScene::Response> reset = sim_->reset("tower10");
+    ASSERT_TRUE(reset.ok) << reset.message;
     // Three seconds of sim time: placed, settled and frozen.
     ASSERT_TRUE(step(3000).success);
     frozen_ = bricks();
@@ -50,11 +48,12 @@ TEST_F(NodeCost, ALateClientReceivesEveryFrozenBricksTransformAndState) {
   tf2_ros::TransformListener listener(buffer);
   std::mutex mutex;
   BrickArray::ConstPtr first_state;
-  ros::Subscriber state_sub =
-      nh_.subscribe<BrickArray>("/brick_sim/bricks", 1, [&](const BrickArray::ConstPtr& msg) {
+  ros::Subscriber state_sub = sim_->subscribeBricks(
+      [&](const BrickArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!first_state) first_state = msg;
-      });
+      },
+      1);
   ASSERT_TRUE(waitFor(
       [&] {
         for (const Brick& brick : frozen_)

@@ -21,13 +21,6 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "brick_stack_sim/BrickArray.h"
-#include "brick_stack_sim/PlaceBrick.h"
-#include "brick_stack_sim/PushBrick.h"
-#include "brick_stack_sim/RemoveBrick.h"
-#include "brick_stack_sim/ResetScene.h"
-#include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/StepSimulation.h"
 #include "node_fixture.h"
 
 namespace {
@@ -44,8 +37,8 @@ class NodeServices : public test::NodeFixture {
     if (HasFatalFailure()) return;
     // Every test starts from a running node and an empty table.
     ASSERT_TRUE(setPaused(false));
-    ResetScene reset;
-    ASSERT_TRUE(reset_.call(reset));
+    const client::Reply<ResetScene::Response> reset = sim_->reset();
+    ASSERT_TRUE(reset.reached) << reset.message;
     ASSERT_TRUE(reset.response.success) << reset.response.message;
     ASSERT_TRUE(bricks().empty());
   }
@@ -85,12 +78,12 @@ TEST_F(NodeServices, PlaceGetRemove) {
 
   RemoveBrick remove;
   remove.request.id = "a";
-  ASSERT_TRUE(call(remove_, remove).success) << remove.response.message;
+  ASSERT_TRUE(call(remove).success) << remove.response.message;
   EXPECT_FALSE(brick("a"));
   EXPECT_EQ(bricks().size(), 1u);
 
   // Removing it again: refused, nothing else touched.
-  expectRefused(call(remove_, remove), "removing an unknown id");
+  expectRefused(call(remove), "removing an unknown id");
   EXPECT_EQ(bricks().size(), 1u);
 }
 
@@ -108,55 +101,55 @@ TEST_F(NodeServices, BadPlacementsAreRefusedAndChangeNothing) {
   };
   base();
   srv.request.pose.position.y = kNaN;
-  expectRefused(call(place_, srv), "NaN position");
+  expectRefused(call(srv), "NaN position");
   EXPECT_NE(srv.response.message.find("pose.position.y"), std::string::npos)
       << srv.response.message;
   base();
   srv.request.twist.angular.x = std::numeric_limits<double>::infinity();
-  expectRefused(call(place_, srv), "Inf angular velocity");
+  expectRefused(call(srv), "Inf angular velocity");
   base();
   srv.request.pose.orientation.w = 2.0;
-  expectRefused(call(place_, srv), "non-unit quaternion");
+  expectRefused(call(srv), "non-unit quaternion");
   EXPECT_NE(srv.response.message.find("orientation"), std::string::npos) << srv.response.message;
   base();
   srv.request.pose.orientation.w = 0.0;
-  expectRefused(call(place_, srv), "zero quaternion");
+  expectRefused(call(srv), "zero quaternion");
   base();
   srv.request.type = "no_such_type";
-  expectRefused(call(place_, srv), "unknown type");
+  expectRefused(call(srv), "unknown type");
   EXPECT_NE(srv.response.message.find("no_such_type"), std::string::npos) << srv.response.message;
   base();
   srv.request.id = "a";
-  expectRefused(call(place_, srv), "duplicate id");
+  expectRefused(call(srv), "duplicate id");
   base();
   srv.request.pose.position.x = 0.01;  // inside brick a
-  expectRefused(call(place_, srv), "pose inside another brick");
+  expectRefused(call(srv), "pose inside another brick");
   base();
   srv.request.pose.position.z = -0.01;
-  expectRefused(call(place_, srv), "pose under the table");
+  expectRefused(call(srv), "pose under the table");
   base();
   srv.request.id = "not valid!";
-  expectRefused(call(place_, srv), "invalid id");
-  // Issue 11: finite but absurd, and names the scene's fixed bodies own.
+  expectRefused(call(srv), "invalid id");
+  // Finite but absurd, and names the scene's fixed bodies own.
   for (double far : {1e300, -1e300, 10.5}) {
     base();
     srv.request.pose.position.x = far;
-    expectRefused(call(place_, srv), "x = " + std::to_string(far));
+    expectRefused(call(srv), "x = " + std::to_string(far));
     EXPECT_NE(srv.response.message.find("outside the world box"), std::string::npos)
         << srv.response.message;
   }
   base();
   srv.request.pose.position.z = 1e300;
-  expectRefused(call(place_, srv), "z = 1e300");
+  expectRefused(call(srv), "z = 1e300");
   for (const char* reserved : {"floor", "Table", "WORLD"}) {
     base();
     srv.request.id = reserved;
-    expectRefused(call(place_, srv), std::string("id ") + reserved);
+    expectRefused(call(srv), std::string("id ") + reserved);
     EXPECT_NE(srv.response.message.find("is reserved"), std::string::npos) << srv.response.message;
   }
   base();
   srv.request.id = "b" + std::string(10239, 'x');
-  expectRefused(call(place_, srv), "10 kB id");
+  expectRefused(call(srv), "10 kB id");
   EXPECT_LT(srv.response.message.size(), 300u) << "the refusal echoes the whole id";
 
   const std::vector<Brick> after = bricks();
@@ -167,7 +160,7 @@ TEST_F(NodeServices, BadPlacementsAreRefusedAndChangeNothing) {
 
   // The same request without its fault is accepted: the refusals were about the fault.
   base();
-  EXPECT_TRUE(call(place_, srv).success) << srv.response.message;
+  EXPECT_TRUE(call(srv).success) << srv.response.message;
 }
 
 TEST_F(NodeServices, NearUnitQuaternionIsAccepted) {
@@ -176,7 +169,7 @@ TEST_F(NodeServices, NearUnitQuaternionIsAccepted) {
   srv.request.pose.position.z = kHalfHeight;
   srv.request.pose.orientation.z = 0.7071;  // 90 degrees about z, four digits
   srv.request.pose.orientation.w = 0.7071;
-  ASSERT_TRUE(call(place_, srv).success) << srv.response.message;
+  ASSERT_TRUE(call(srv).success) << srv.response.message;
   const std::optional<Brick> q = brick("q");
   ASSERT_TRUE(q);
   const auto& o = q->pose.orientation;
@@ -187,13 +180,14 @@ TEST_F(NodeServices, NearUnitQuaternionIsAccepted) {
 TEST_F(NodeServices, PlacedBrickIsPublishedOnTopicAndTf) {
   std::mutex mutex;
   std::optional<Brick> seen;
-  ros::Subscriber sub =
-      nh_.subscribe<BrickArray>("/brick_sim/bricks", 10, [&](const BrickArray::ConstPtr& msg) {
+  ros::Subscriber sub = sim_->subscribeBricks(
+      [&](const BrickArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         EXPECT_EQ(msg->header.frame_id, "world");
         for (const Brick& b : msg->bricks)
           if (b.id == "tf_brick") seen = b;
-      });
+      },
+      10);
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
 
@@ -224,11 +218,12 @@ TEST_F(NodeServices, PlacedBrickIsPublishedOnTopicAndTf) {
 TEST_F(NodeServices, EventsArriveForPlacementAndRemoval) {
   std::mutex mutex;
   std::vector<StabilityEvent> events;
-  ros::Subscriber sub = nh_.subscribe<StabilityEvent>("/brick_sim/events", 100,
-                                                      [&](const StabilityEvent::ConstPtr& msg) {
-                                                        std::lock_guard<std::mutex> lock(mutex);
-                                                        events.push_back(*msg);
-                                                      });
+  ros::Subscriber sub = sim_->subscribeEvents(
+      [&](const StabilityEvent::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        events.push_back(*msg);
+      },
+      100);
   ASSERT_TRUE(waitFor([&] { return sub.getNumPublishers() > 0; }, 10.0));
   auto has = [&](const std::string& id, uint8_t kind) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -242,7 +237,7 @@ TEST_F(NodeServices, EventsArriveForPlacementAndRemoval) {
       << "no spawned event for ev";
   RemoveBrick remove;
   remove.request.id = "ev";
-  ASSERT_TRUE(call(remove_, remove).success);
+  ASSERT_TRUE(call(remove).success);
   EXPECT_TRUE(waitFor([&] { return has("ev", StabilityEvent::REMOVED); }, 10.0))
       << "no removed event for ev";
   // A refused placement is not an event.
@@ -294,18 +289,18 @@ TEST_F(NodeServices, ResetWithUnknownSceneChangesNothing) {
   ASSERT_TRUE(place("keep", 0.1, 0.1, kHalfHeight).success);
   ResetScene reset;
   reset.request.scene = "no_such_scene_1234";
-  expectRefused(call(reset_, reset), "unknown scene");
+  expectRefused(call(reset), "unknown scene");
   const std::vector<Brick> after = bricks();
   ASSERT_EQ(after.size(), 1u);
   EXPECT_EQ(after[0].id, "keep");
 
   reset.request.scene = "";
-  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  ASSERT_TRUE(call(reset).success) << reset.response.message;
   EXPECT_TRUE(bricks().empty());
 }
 
 TEST_F(NodeServices, HostileScenesAreRefusedAtOnceAndChangeNothing) {
-  // Issue 11: /dev/zero was read until the node was killed for memory, and a
+  // /dev/zero was once read until the node was killed for memory, and a
   // FIFO blocked the whole node until someone wrote to it.
   ASSERT_TRUE(place("keep", 0.1, 0.1, kHalfHeight).success);
   const std::string dir = ::testing::TempDir() + "/hostile_scenes_" + std::to_string(getpid());
@@ -328,7 +323,11 @@ TEST_F(NodeServices, HostileScenesAreRefusedAtOnceAndChangeNothing) {
     ResetScene reset;
     reset.request.scene = scene;
     std::promise<bool> answered;
-    std::thread caller([&] { answered.set_value(reset_.call(reset)); });
+    std::thread caller([&] {
+      const client::Reply<ResetScene::Response> reply = sim_->reset(reset.request.scene);
+      reset.response = reply.response;
+      answered.set_value(reply.reached);
+    });
     std::future<bool> answer = answered.get_future();
     const bool in_time = answer.wait_for(std::chrono::seconds(5)) == std::future_status::ready;
     if (!in_time) {
@@ -357,7 +356,7 @@ TEST_F(NodeServices, ResetPlaysSceneOnTime) {
   ASSERT_TRUE(setPaused(true));
   ResetScene reset;
   reset.request.scene = scene_path;
-  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  ASSERT_TRUE(call(reset).success) << reset.response.message;
   EXPECT_EQ(reset.response.bricks_scheduled, 2u);
   // s0 is due at once, s1 half a second of sim time later; "old" is gone.
   EXPECT_FALSE(brick("old"));
@@ -376,7 +375,7 @@ TEST_F(NodeServices, SceneWithItsOwnTableAndTypes) {
   const double before = step(1).sim_time;
   ResetScene reset;
   reset.request.scene = scene_path;
-  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  ASSERT_TRUE(call(reset).success) << reset.response.message;
   const std::optional<Brick> t0 = brick("t0");
   ASSERT_TRUE(t0) << "the scene's brick was not placed";
   EXPECT_EQ(t0->type, "tiny");
@@ -389,7 +388,7 @@ TEST_F(NodeServices, SceneWithItsOwnTableAndTypes) {
 
   // An empty reset goes back to the configured world: the scene's type is gone.
   reset.request.scene = "";
-  ASSERT_TRUE(call(reset_, reset).success) << reset.response.message;
+  ASSERT_TRUE(call(reset).success) << reset.response.message;
   EXPECT_TRUE(bricks().empty());
   expectRefused(place("t2", 0.0, 0.0, 0.01, 0.0, "tiny"), "a type of a previous scene");
   EXPECT_TRUE(place("k", 0.0, 0.0, kHalfHeight).success);
@@ -405,16 +404,16 @@ TEST_F(NodeServices, PushBrick) {
   PushBrick push;
   push.request.id = "p";
   push.request.impulse.x = kNaN;
-  expectRefused(call(push_, push), "NaN impulse");
+  expectRefused(call(push), "NaN impulse");
   push.request.impulse.x = 0.005;  // 0.42 m/s for a 11.9 g plank: slides ~2 cm
   push.request.point.z = kHalfHeight;
   push.request.id = "nobody";
-  expectRefused(call(push_, push), "push of an unknown id");
+  expectRefused(call(push), "push of an unknown id");
   ASSERT_TRUE(step(10).success);
   EXPECT_NEAR(brick("p")->pose.position.x, x0, 1e-4) << "a refused push moved the brick";
 
   push.request.id = "p";
-  ASSERT_TRUE(call(push_, push).success) << push.response.message;
+  ASSERT_TRUE(call(push).success) << push.response.message;
   ASSERT_TRUE(step(300).success);
   EXPECT_GT(brick("p")->pose.position.x - x0, 0.005);
 }
@@ -428,7 +427,7 @@ TEST_F(NodeServices, QueryPlacementAnswersByStaticsAndChangesNothing) {
     srv.request.pose.position.x = x;
     srv.request.pose.position.z = z;
     srv.request.pose.orientation.w = 1.0;
-    return call(query_, srv);
+    return call(srv);
   };
   // Centred on "a": it rests there. 30 mm along: still over it. 70 mm
   // along: its COM past a's end (58.5 mm), it falls.
@@ -454,7 +453,7 @@ TEST_F(NodeServices, QueryPlacementAnswersByStaticsAndChangesNothing) {
   QueryPlacement nan;
   nan.request.pose.position.x = kNaN;
   nan.request.pose.orientation.w = 1.0;
-  expectRefused(call(query_, nan), "a NaN position");
+  expectRefused(call(nan), "a NaN position");
   // Nothing changed: the same bricks, where they were.
   const std::vector<Brick> after = bricks();
   ASSERT_EQ(after.size(), before.size());

@@ -19,7 +19,6 @@
 #include <unistd.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/BrickArray.h"
 #include "node_fixture.h"
 #include "support/marker_viewer.h"
 
@@ -60,9 +59,8 @@ M fromBytes(std::string buffer) {
 /// A client of ~bricks that applies each message as BrickArray.msg says.
 class DeltaClient {
  public:
-  DeltaClient(ros::NodeHandle& nh)
-      : sub_(nh.subscribe<BrickArray>("/brick_sim/bricks", 1000,
-                                      [this](const BrickArray::ConstPtr& msg) { apply(*msg); })) {}
+  explicit DeltaClient(client::SimClient& sim)
+      : sub_(sim.subscribeBricks([this](const BrickArray::ConstPtr& msg) { apply(*msg); }, 1000)) {}
 
   std::map<std::string, Brick> state() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -110,13 +108,14 @@ class DeltaClient {
 
 class ViewerClient {
  public:
-  ViewerClient(ros::NodeHandle& nh)
-      : sub_(nh.subscribe<MarkerArray>("/brick_sim/markers", 1000,
-                                       [this](const MarkerArray::ConstPtr& msg) {
-                                         std::lock_guard<std::mutex> lock(mutex_);
-                                         viewer_.apply(*msg);
-                                         ++arrays_;
-                                       })) {}
+  explicit ViewerClient(client::SimClient& sim)
+      : sub_(sim.subscribeMarkers(
+            [this](const MarkerArray::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(mutex_);
+              viewer_.apply(*msg);
+              ++arrays_;
+            },
+            1000)) {}
   test::MarkerViewer viewer() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return viewer_;
@@ -139,8 +138,8 @@ class NodeUpdates : public test::NodeFixture {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
     ASSERT_TRUE(setPaused(true));
-    deltas_ = std::make_unique<DeltaClient>(nh_);
-    viewer_ = std::make_unique<ViewerClient>(nh_);
+    deltas_ = std::make_unique<DeltaClient>(*sim_);
+    viewer_ = std::make_unique<ViewerClient>(*sim_);
     ASSERT_TRUE(waitFor(
         [&] { return deltas_->messages(BrickArray::FULL) > 0 && viewer_->arrays() > 0; }, 20.0))
         << "no first message on ~bricks or ~markers";
@@ -206,11 +205,7 @@ class NodeUpdates : public test::NodeFixture {
     *bricks = fromBytes<BrickArray>(bricks_bytes);
   }
 
-  bool remove(const std::string& id) {
-    RemoveBrick srv;
-    srv.request.id = id;
-    return remove_.call(srv) && srv.response.success;
-  }
+  bool remove(const std::string& id) { return sim_->removeBrick(id).ok; }
 
   std::unique_ptr<DeltaClient> deltas_;
   std::unique_ptr<ViewerClient> viewer_;
@@ -218,9 +213,8 @@ class NodeUpdates : public test::NodeFixture {
 };
 
 TEST_F(NodeUpdates, AppliedDeltasAndMarkerUpdatesEqualTheStateFromScratch) {
-  ResetScene reset;
-  reset.request.scene = "tower10";
-  ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+  const client::Reply<ResetScene::Response> reset = sim_->reset("tower10");
+  ASSERT_TRUE(reset.ok) << reset.message;
   ASSERT_TRUE(step(2000).success);  // placed, settled, frozen
   for (const Brick& brick : bricks()) ASSERT_EQ(brick.state, Brick::STABLE) << brick.id;
   expectClientsAreUpToDate("the tower frozen");
@@ -242,10 +236,11 @@ TEST_F(NodeUpdates, AppliedDeltasAndMarkerUpdatesEqualTheStateFromScratch) {
 
   // A removal under the load wakes everything above; a push wakes one more.
   ASSERT_TRUE(remove("b2"));
-  PushBrick push;
-  push.request.id = "landing";
-  push.request.impulse.y = 0.01;
-  ASSERT_TRUE(push_.call(push) && push.response.success) << push.response.message;
+  PushBrick::Request push;
+  push.id = "landing";
+  push.impulse.y = 0.01;
+  const client::Reply<PushBrick::Response> pushed = sim_->pushBrick(push);
+  ASSERT_TRUE(pushed.ok) << pushed.message;
   ASSERT_TRUE(step(50).success);
   expectClientsAreUpToDate("mid-collapse");
   ASSERT_TRUE(step(2000).success);
@@ -254,7 +249,8 @@ TEST_F(NodeUpdates, AppliedDeltasAndMarkerUpdatesEqualTheStateFromScratch) {
   expectClientsAreUpToDate("removals while paused");
 
   // A reset: every brick goes, a new world with the same ids comes.
-  ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+  const client::Reply<ResetScene::Response> again = sim_->reset("tower10");
+  ASSERT_TRUE(again.ok) << again.message;
   ASSERT_TRUE(step(500).success);
   expectClientsAreUpToDate("after the reset");
 
@@ -264,9 +260,8 @@ TEST_F(NodeUpdates, AppliedDeltasAndMarkerUpdatesEqualTheStateFromScratch) {
 }
 
 TEST_F(NodeUpdates, ALateClientStartsFromEveryBrickAndEveryMarker) {
-  ResetScene reset;
-  reset.request.scene = "tower10";
-  ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+  const client::Reply<ResetScene::Response> reset = sim_->reset("tower10");
+  ASSERT_TRUE(reset.ok) << reset.message;
   ASSERT_TRUE(step(2000).success);
   const std::vector<Brick> now = bricks();
   // Paused and frozen: nothing changes, yet the late client is served.
@@ -282,26 +277,24 @@ TEST_F(NodeUpdates, ALateClientStartsFromEveryBrickAndEveryMarker) {
 }
 
 TEST_F(NodeUpdates, GetBricksByIdsAnswersInTheirOrderAndRefusesUnknownOrRepeatedOnes) {
-  ResetScene reset;
-  reset.request.scene = "tower10";
-  ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+  const client::Reply<ResetScene::Response> reset = sim_->reset("tower10");
+  ASSERT_TRUE(reset.ok) << reset.message;
   ASSERT_TRUE(step(100).success);
   std::map<std::string, std::string> all;
   for (const Brick& brick : bricks()) all[brick.id] = bytes(brick);
-  GetBricks some;
-  some.request.ids = {"b5", "b0", "b19"};
-  ASSERT_TRUE(get_.call(some));
+  const std::vector<std::string> ids = {"b5", "b0", "b19"};
+  const client::Reply<GetBricks::Response> some = sim_->getBricks(ids);
+  ASSERT_TRUE(some.reached) << some.message;
   ASSERT_TRUE(some.response.success) << some.response.message;
   ASSERT_EQ(some.response.bricks.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(some.response.bricks[i].id, some.request.ids[i]);
-    EXPECT_EQ(bytes(some.response.bricks[i]), all[some.request.ids[i]]);
+    EXPECT_EQ(some.response.bricks[i].id, ids[i]);
+    EXPECT_EQ(bytes(some.response.bricks[i]), all[ids[i]]);
   }
   for (const std::vector<std::string>& bad :
        {std::vector<std::string>{"b1", "nope"}, std::vector<std::string>{"b1", "b1"}}) {
-    GetBricks refused;
-    refused.request.ids = bad;
-    ASSERT_TRUE(get_.call(refused));
+    const client::Reply<GetBricks::Response> refused = sim_->getBricks(bad);
+    ASSERT_TRUE(refused.reached) << refused.message;
     EXPECT_FALSE(refused.response.success);
     EXPECT_TRUE(refused.response.bricks.empty());
     EXPECT_NE(refused.response.message.find(bad.back() == "nope" ? "nope" : "twice"),
@@ -316,22 +309,24 @@ TEST_F(NodeUpdates, GetBricksByIdsAnswersInTheirOrderAndRefusesUnknownOrRepeated
 /// message, written to `path` (length and bytes each).
 int runFreshClient(int argc, char** argv, const std::string& path) {
   ros::init(argc, argv, "fresh_client");
-  ros::NodeHandle nh;
+  client::SimClient sim;
   std::mutex mutex;
   std::optional<MarkerArray> markers;
   std::optional<BrickArray> bricks;
-  ros::Subscriber markers_sub =
-      nh.subscribe<MarkerArray>("/brick_sim/markers", 10, [&](const MarkerArray::ConstPtr& msg) {
+  ros::Subscriber markers_sub = sim.subscribeMarkers(
+      [&](const MarkerArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         // A delta published before its connection was served is not its start.
         if (!markers && !msg->markers.empty() && msg->markers.front().action == Marker::DELETEALL)
           markers = *msg;
-      });
-  ros::Subscriber bricks_sub =
-      nh.subscribe<BrickArray>("/brick_sim/bricks", 10, [&](const BrickArray::ConstPtr& msg) {
+      },
+      10);
+  ros::Subscriber bricks_sub = sim.subscribeBricks(
+      [&](const BrickArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!bricks && msg->kind == BrickArray::FULL) bricks = *msg;
-      });
+      },
+      10);
   ros::AsyncSpinner spinner(1);
   spinner.start();
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(20.0);

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
-#include "brick_stack_sim/BrickArray.h"
+#include "brick_stack_sim/ros/interface_names.h"
 #include "brick_stack_sim/ros/node.h"
 #include "node_fixture.h"
 
@@ -25,7 +25,7 @@ using namespace brick_stack_sim;
 /// Calls made during the step; at 20 ms apart, a few seconds of it.
 constexpr int kLatencySamples = 200;
 constexpr double kCallSpacing = 0.02;   ///< [s]
-constexpr double kMaxP99Latency = 0.1;  ///< [s], issue 11
+constexpr double kMaxP99Latency = 0.1;  ///< [s]
 
 class Responsiveness : public test::NodeFixture {
  protected:
@@ -35,9 +35,8 @@ class Responsiveness : public test::NodeFixture {
     ASSERT_TRUE(setPaused(true));
     std::string scene;
     ASSERT_TRUE(ros::param::get("~busy_scene", scene));
-    ResetScene reset;
-    reset.request.scene = scene;
-    ASSERT_TRUE(reset_.call(reset));
+    const client::Reply<ResetScene::Response> reset = sim_->reset(scene);
+    ASSERT_TRUE(reset.reached) << reset.message;
     ASSERT_TRUE(reset.response.success) << reset.response.message;
     // The pile is placed over its first steps: every brick in before timing.
     ASSERT_TRUE(step(2000).success);
@@ -45,17 +44,18 @@ class Responsiveness : public test::NodeFixture {
   }
 
   /// ~get_bricks from its own connection, timed [s].
-  double timedGetBricks(ros::ServiceClient& client, double* sim_time) {
-    GetBricks srv;
+  double timedGetBricks(client::SimClient& sim, double* sim_time) {
     const auto start = std::chrono::steady_clock::now();
-    EXPECT_TRUE(client.call(srv));
+    const client::Reply<GetBricks::Response> reply = sim.getBricks();
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    EXPECT_TRUE(srv.response.success) << srv.response.message;
-    EXPECT_EQ(srv.response.bricks.size(), 50u);
+    EXPECT_TRUE(reply.reached) << reply.message;
+    const GetBricks::Response& response = reply.response;
+    EXPECT_TRUE(response.success) << response.message;
+    EXPECT_EQ(response.bricks.size(), 50u);
     // Stamps are wall time here (no /clock); the message says the sim time:
     // "50 bricks at t=12.345 s".
-    const std::size_t at = srv.response.message.find("t=");
-    if (at != std::string::npos) *sim_time = std::stod(srv.response.message.substr(at + 2));
+    const std::size_t at = response.message.find("t=");
+    if (at != std::string::npos) *sim_time = std::stod(response.message.substr(at + 2));
     return took.count();
   }
 };
@@ -63,26 +63,27 @@ class Responsiveness : public test::NodeFixture {
 TEST_F(Responsiveness, GetBricksAnsweredDuringMillionStepRequest) {
   std::mutex count_mutex;
   int bricks_messages = 0;
-  ros::Subscriber counter =
-      nh_.subscribe<BrickArray>("/brick_sim/bricks", 1000, [&](const BrickArray::ConstPtr&) {
+  ros::Subscriber counter = sim_->subscribeBricks(
+      [&](const BrickArray::ConstPtr&) {
         std::lock_guard<std::mutex> lock(count_mutex);
         ++bricks_messages;
-      });
+      },
+      1000);
   ASSERT_TRUE(waitFor([&] { return counter.getNumPublishers() > 0; }, 10.0));
 
   double start_time = 0.0;
-  ros::ServiceClient get_client = nh_.serviceClient<GetBricks>("/brick_sim/get_bricks", true);
+  client::SimClient get_client;  // persistent
   timedGetBricks(get_client, &start_time);
 
   // The step runs in its own thread: its call returns only when it is done
   // or interrupted.
   std::promise<StepSimulation::Response> step_done;
   std::thread stepper([&] {
-    ros::ServiceClient client = nh_.serviceClient<StepSimulation>("/brick_sim/step");
-    StepSimulation srv;
-    srv.request.steps = ros_adapter::kMaxStepsPerRequest;
-    EXPECT_TRUE(client.call(srv));
-    step_done.set_value(srv.response);
+    client::SimClient step_client;
+    const client::Reply<StepSimulation::Response> reply =
+        step_client.step(ros_adapter::kMaxStepsPerRequest);
+    EXPECT_TRUE(reply.reached) << reply.message;
+    step_done.set_value(reply.response);
   });
   std::future<StepSimulation::Response> step_answer = step_done.get_future();
   ros::WallDuration(0.2).sleep();  // the step is under way
@@ -132,7 +133,7 @@ TEST_F(Responsiveness, GetBricksAnsweredDuringMillionStepRequest) {
   EXPECT_GT(simulated, 0.5) << "sim time hardly advanced during the step";
   // publish_rate (30 Hz) of wall time, not of sim time (which runs faster).
   double publish_rate = 0.0;
-  ASSERT_TRUE(ros::param::get("/brick_sim/publish_rate", publish_rate));
+  ASSERT_TRUE(ros::param::get(sim_->resolve(ros_adapter::kPublishRateParameter), publish_rate));
   EXPECT_GT(rate, 0.5 * publish_rate);
   EXPECT_LT(rate, 1.5 * publish_rate);
   EXPECT_GT(simulated / window, 1.5)

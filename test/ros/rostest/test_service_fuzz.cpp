@@ -28,10 +28,7 @@
 #include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/BrickArray.h"
-#include "brick_stack_sim/GraspBrick.h"
-#include "brick_stack_sim/ReleaseBrick.h"
-#include "brick_stack_sim/StabilityEvent.h"
+#include "brick_stack_sim/ros/interface_names.h"
 #include "node_fixture.h"
 
 namespace {
@@ -61,15 +58,18 @@ bool finite(const Brick& b) {
 /// Counts what the topics carried and every non-finite number among it.
 class TopicWatch {
  public:
-  explicit TopicWatch(ros::NodeHandle& nh) {
-    bricks_ = nh.subscribe<BrickArray>("/brick_sim/bricks", 100, [this](const auto& msg) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      ++messages_;
-      for (const Brick& b : msg->bricks)
-        if (!finite(b)) bad_.push_back("~bricks: brick " + b.id);
-    });
-    markers_ = nh.subscribe<visualization_msgs::MarkerArray>(
-        "/brick_sim/markers", 10, [this](const auto& msg) {
+  /// ~bricks, ~markers and ~events through `sim`, /tf through `nh`.
+  TopicWatch(client::SimClient& sim, ros::NodeHandle& nh) {
+    bricks_ = sim.subscribeBricks(
+        [this](const auto& msg) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          ++messages_;
+          for (const Brick& b : msg->bricks)
+            if (!finite(b)) bad_.push_back("~bricks: brick " + b.id);
+        },
+        100);
+    markers_ = sim.subscribeMarkers(
+        [this](const auto& msg) {
           std::lock_guard<std::mutex> lock(mutex_);
           ++messages_;
           for (const auto& m : msg->markers) {
@@ -77,16 +77,19 @@ class TopicWatch {
             for (const auto& p : m.points) ok = ok && finite(p);
             if (!ok) bad_.push_back("~markers: " + m.ns + "/" + std::to_string(m.id));
           }
-        });
-    events_ = nh.subscribe<StabilityEvent>("/brick_sim/events", 10000, [this](const auto& msg) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      ++messages_;
-      if (msg->kind == StabilityEvent::LOST) {
-        lost_.insert(msg->brick_id);
-        ever_lost_.insert(msg->brick_id);
-      }
-      if (msg->kind == StabilityEvent::SPAWNED) lost_.erase(msg->brick_id);
-    });
+        },
+        10);
+    events_ = sim.subscribeEvents(
+        [this](const auto& msg) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          ++messages_;
+          if (msg->kind == StabilityEvent::LOST) {
+            lost_.insert(msg->brick_id);
+            ever_lost_.insert(msg->brick_id);
+          }
+          if (msg->kind == StabilityEvent::SPAWNED) lost_.erase(msg->brick_id);
+        },
+        10000);
     tf_ = nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [this](const auto& msg) {
       std::lock_guard<std::mutex> lock(mutex_);
       ++messages_;
@@ -142,7 +145,7 @@ long nodeResidentKilobytes() {
     std::ifstream cmdline("/proc/" + pid + "/cmdline");
     std::string args((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
     if (args.find("brick_stack_sim_node") == std::string::npos ||
-        args.find(std::string("__name:=brick_sim") + '\0') == std::string::npos)
+        args.find(std::string("__name:=") + ros_adapter::kNodeName + '\0') == std::string::npos)
       continue;
     std::ifstream status("/proc/" + pid + "/status");
     std::string line;
@@ -158,10 +161,7 @@ class ServiceFuzz : public test::NodeFixture {
   void SetUp() override {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
-    connectClients(true);
-    grasp_ = nh_.serviceClient<GraspBrick>("/brick_sim/grasp_brick", true);
-    release_ = nh_.serviceClient<ReleaseBrick>("/brick_sim/release_brick", true);
-    held_target_ = nh_.advertise<geometry_msgs::PoseStamped>("/brick_sim/held_target", 10);
+    sim_->advertiseHeldTarget();
     ros::param::param("~seed", seed_, 1);
     ros::param::param("~requests", requests_, 3000);
     ros::param::param("~soak_sim_seconds", soak_sim_seconds_, 60.0);
@@ -169,8 +169,8 @@ class ServiceFuzz : public test::NodeFixture {
 
   /// A call that does not come back in time fails the test and ends the fuzz.
   template <typename Service>
-  bool callInTime(ros::ServiceClient& client, Service& srv) {
-    if (test::callWithin(client, srv, kCallTimeout)) return true;
+  bool callInTime(Service& srv) {
+    if (test::callWithin(sim_, srv, kCallTimeout)) return true;
     hung_ = true;
     return false;
   }
@@ -260,8 +260,8 @@ class ServiceFuzz : public test::NodeFixture {
           srv.request.twist.linear.x = 40.0;  // thrown out of the world: lost
           srv.request.twist.linear.z = 5.0;
         }
-        if (!callInTime(place_, srv)) return;
-        tally("place_brick", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kPlaceBrickService, srv.response);
         if (srv.response.success) {
           EXPECT_FALSE(srv.response.id.empty()) << "a placement accepted without an id";
           if (!srv.request.id.empty()) {
@@ -278,8 +278,8 @@ class ServiceFuzz : public test::NodeFixture {
       case 3: {
         RemoveBrick srv;
         srv.request.id = id();
-        if (!callInTime(remove_, srv)) return;
-        tally("remove_brick", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kRemoveBrickService, srv.response);
         if (srv.response.success) model_.erase(srv.request.id);
         return;
       }
@@ -291,15 +291,15 @@ class ServiceFuzz : public test::NodeFixture {
           srv.request.point.x = coordinate(-0.5, 0.5);
           srv.request.point.z = coordinate(0, 0.1);
         }
-        if (!callInTime(push_, srv)) return;
-        tally("push_brick", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kPushBrickService, srv.response);
         return;
       }
       case 5: {
         QueryPlacement srv;
         srv.request.pose = pose();
-        if (!callInTime(query_, srv)) return;
-        tally("query_placement", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kQueryPlacementService, srv.response);
         if (srv.response.success) {
           EXPECT_TRUE(finite(srv.response.margin) && finite(srv.response.acceleration_margin));
         }
@@ -307,23 +307,23 @@ class ServiceFuzz : public test::NodeFixture {
       }
       case 6: {
         GetBricks srv;
-        if (!callInTime(get_, srv)) return;
-        tally("get_bricks", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kGetBricksService, srv.response);
         for (const Brick& b : srv.response.bricks) EXPECT_TRUE(finite(b)) << "brick " << b.id;
         return;
       }
       case 7: {
         std_srvs::SetBool srv;
         srv.request.data = chance(0.5);
-        if (!callInTime(pause_, srv)) return;
-        tally("pause", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kPauseService, srv.response);
         return;
       }
       case 8: {
         StepSimulation srv;
         srv.request.steps = static_cast<unsigned>(pick({0, 1, 10, 100, 500, 20000}));
-        if (!callInTime(step_, srv)) return;
-        tally("step", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kStepService, srv.response);
         EXPECT_TRUE(finite(srv.response.sim_time));
         return;
       }
@@ -332,32 +332,32 @@ class ServiceFuzz : public test::NodeFixture {
         // Only the empty scene is accepted: the model stays exact.
         // A table cleared now and then, rarely enough that stacks grow.
         srv.request.scene = chance(0.05) ? "" : chance(0.5) ? "no_such_scene" : "/dev/zero";
-        if (!callInTime(reset_, srv)) return;
-        tally("reset", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kResetService, srv.response);
         if (srv.response.success) model_.clear();
         return;
       }
       case 10: {
         GraspBrick srv;
         srv.request.id = id();
-        if (!callInTime(grasp_, srv)) return;
-        tally("grasp_brick", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kGraspBrickService, srv.response);
         return;
       }
       case 11: {
         ReleaseBrick srv;
         srv.request.id = id();
         srv.request.twist.linear = vector(1.0);
-        if (!callInTime(release_, srv)) return;
-        tally("release_brick", srv.response);
+        if (!callInTime(srv)) return;
+        tally(ros_adapter::kReleaseBrickService, srv.response);
         return;
       }
       default: {  // a topic: no answer to check, only that nothing breaks
         geometry_msgs::PoseStamped target;
         target.header.frame_id = chance(0.9) ? "world" : "elsewhere";
         target.pose = pose();
-        held_target_.publish(target);
-        ++counts_["held_target (topic)"].accepted;
+        sim_->publishHeldTarget(target);
+        ++counts_[std::string(ros_adapter::kHeldTargetTopic) + " (topic)"].accepted;
         return;
       }
     }
@@ -375,17 +375,15 @@ class ServiceFuzz : public test::NodeFixture {
   int seed_ = 1;
   int requests_ = 3000;
   double soak_sim_seconds_ = 60.0;
-  ros::ServiceClient grasp_, release_;
-  ros::Publisher held_target_;
 };
 
 TEST_F(ServiceFuzz, EveryAnswerChecksAndTheBricksAreWhatTheAcceptedRequestsBuilt) {
   random_.seed(static_cast<std::uint64_t>(seed_));
-  watch_ = std::make_unique<TopicWatch>(nh_);
+  watch_ = std::make_unique<TopicWatch>(*sim_, nh_);
   TopicWatch& watch = *watch_;
   ASSERT_TRUE(waitFor([&] { return watch.connected(); }, 20.0)) << "topics never connected";
   ResetScene clear;
-  ASSERT_TRUE(callInTime(reset_, clear) && clear.response.success);
+  ASSERT_TRUE(callInTime(clear) && clear.response.success);
 
   for (int i = 0; i < requests_ && !hung_; ++i) fuzzOnce();
   ASSERT_FALSE(hung_) << "the node stopped answering";
@@ -418,9 +416,11 @@ TEST_F(ServiceFuzz, EveryAnswerChecksAndTheBricksAreWhatTheAcceptedRequestsBuilt
       table.str().c_str());
   // Every service was both accepted and refused at least once: the fuzz
   // reached past the input checks and into them (~pause has no bad input).
-  EXPECT_GT(counts_["pause"].accepted, 0);
-  for (const char* service : {"place_brick", "remove_brick", "push_brick", "query_placement",
-                              "step", "reset", "grasp_brick", "release_brick"}) {
+  EXPECT_GT(counts_[ros_adapter::kPauseService].accepted, 0);
+  for (const char* service : {ros_adapter::kPlaceBrickService, ros_adapter::kRemoveBrickService,
+                              ros_adapter::kPushBrickService, ros_adapter::kQueryPlacementService,
+                              ros_adapter::kStepService, ros_adapter::kResetService,
+                              ros_adapter::kGraspBrickService, ros_adapter::kReleaseBrickService}) {
     EXPECT_GT(counts_[service].accepted, 0) << service << " never accepted";
     EXPECT_GT(counts_[service].refused, 0) << service << " never refused";
   }
@@ -435,7 +435,7 @@ TEST_F(ServiceFuzz, PlaceAndRemoveSoakKeepsMemoryFlat) {
 #endif
   ASSERT_TRUE(setPaused(true));
   ResetScene clear;
-  ASSERT_TRUE(callInTime(reset_, clear) && clear.response.success);
+  ASSERT_TRUE(callInTime(clear) && clear.response.success);
   ASSERT_GT(nodeResidentKilobytes(), 0) << "the node's process was not found";
   constexpr int kBricksPerRound = 20;
   constexpr unsigned kStepsPerRound = 1000;  // 1 s of sim time
@@ -452,12 +452,11 @@ TEST_F(ServiceFuzz, PlaceAndRemoveSoakKeepsMemoryFlat) {
     }
     StepSimulation srv;
     srv.request.steps = kStepsPerRound;
-    ASSERT_TRUE(callInTime(step_, srv) && srv.response.success) << srv.response.message;
+    ASSERT_TRUE(callInTime(srv) && srv.response.success) << srv.response.message;
     for (int i = 0; i < kBricksPerRound; ++i) {
       RemoveBrick remove;
       remove.request.id = "s" + std::to_string(i);
-      ASSERT_TRUE(callInTime(remove_, remove) && remove.response.success)
-          << remove.response.message;
+      ASSERT_TRUE(callInTime(remove) && remove.response.success) << remove.response.message;
     }
     const long rss = nodeResidentKilobytes();
     peak_rss = std::max(peak_rss, rss);

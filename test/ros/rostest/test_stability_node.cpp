@@ -16,10 +16,7 @@
 #include <ros/ros.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "brick_stack_sim/RemoveBrick.h"
-#include "brick_stack_sim/ResetScene.h"
-#include "brick_stack_sim/StabilityEvent.h"
-#include "brick_stack_sim/core/world/world_options.h"
+#include "brick_stack_sim/core/types/world_options.h"
 #include "node_fixture.h"
 #include "support/kapla.h"
 #include "support/marker_viewer.h"
@@ -43,16 +40,17 @@ class StabilityNode : public test::NodeFixture {
   void SetUp() override {
     NodeFixture::SetUp();
     if (HasFatalFailure()) return;
-    events_sub_ = nh_.subscribe<StabilityEvent>("/brick_sim/events", 1000,
-                                                [this](const StabilityEvent::ConstPtr& msg) {
-                                                  std::lock_guard<std::mutex> lock(mutex_);
-                                                  events_.push_back(*msg);
-                                                });
+    events_sub_ = sim_->subscribeEvents(
+        [this](const StabilityEvent::ConstPtr& msg) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          events_.push_back(*msg);
+        },
+        1000);
     ASSERT_TRUE(waitFor([&] { return events_sub_.getNumPublishers() > 0; }, 10.0));
     // Every test starts from a paused node and an empty table.
     ASSERT_TRUE(setPaused(true));
-    ResetScene reset;
-    ASSERT_TRUE(reset_.call(reset) && reset.response.success) << reset.response.message;
+    const client::Reply<ResetScene::Response> reset = sim_->reset();
+    ASSERT_TRUE(reset.ok) << reset.message;
     ros::WallDuration(0.2).sleep();  // the reset's removed events
     clearEvents();
   }
@@ -133,11 +131,11 @@ TEST_F(StabilityNode, StabilityYamlHoldsTheBuiltInDefaults) {
       {"min_margin", defaults.min_margin}};
   for (const auto& [name, value] : expected) {
     double loaded = -1.0;
-    EXPECT_TRUE(nh_.getParam("/brick_sim/stability/" + name, loaded)) << name << " not loaded";
+    EXPECT_TRUE(nh_.getParam(sim_->resolve("stability/" + name), loaded)) << name << " not loaded";
     EXPECT_EQ(loaded, value) << name;
   }
   std::string mode;
-  EXPECT_TRUE(nh_.getParam("/brick_sim/stability/mode", mode));
+  EXPECT_TRUE(nh_.getParam(sim_->resolve("stability/mode"), mode));
   EXPECT_EQ(mode, "com");
 }
 
@@ -171,9 +169,8 @@ TEST_F(StabilityNode, TowerFreezesAndRemovalWakesExactlyTheBricksAbove) {
   // Removing a layer-1 brick takes the support from under both layer-2 bricks
   // and from nothing else. Paused, so no fall can wake anything afterwards.
   clearEvents();
-  RemoveBrick remove;
-  remove.request.id = "l1a";
-  ASSERT_TRUE(remove_.call(remove));
+  const client::Reply<RemoveBrick::Response> remove = sim_->removeBrick("l1a");
+  ASSERT_TRUE(remove.reached) << remove.message;
   ASSERT_TRUE(remove.response.success) << remove.response.message;
   const std::set<std::string> above = {"l2a", "l2b"};
   EXPECT_TRUE(waitFor([&] { return eventIds(StabilityEvent::WOKEN) == above; }, 10.0));
@@ -217,13 +214,14 @@ TEST_F(StabilityNode, MarkersShowBricksComRaysAndContactMeshes) {
   std::mutex mutex;
   test::MarkerViewer viewer;
   std::optional<bool> first_clears;
-  ros::Subscriber sub =
-      nh_.subscribe<MarkerArray>("/brick_sim/markers", 10, [&](const MarkerArray::ConstPtr& msg) {
+  ros::Subscriber sub = sim_->subscribeMarkers(
+      [&](const MarkerArray::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!first_clears)
           first_clears = !msg->markers.empty() && msg->markers.front().action == Marker::DELETEALL;
         viewer.apply(*msg);
-      });
+      },
+      10);
   ASSERT_TRUE(waitFor([&] { return sub.getNumPublishers() > 0; }, 10.0));
   for (int i = 0; i < 4; ++i) ASSERT_TRUE(placeTowerBrick("m" + std::to_string(i), i / 2, i % 2));
   step(100);

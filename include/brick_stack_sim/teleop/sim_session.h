@@ -1,8 +1,8 @@
 #pragma once
-// What the teleop nodes ask of the simulator (DESIGN.md section 3), in one
-// place: every call waits briefly for its service, and every failure or
-// refusal is logged at WARN with the simulator's own message, so that a user
-// always sees why an action did nothing.
+// What the teleop nodes ask of the simulator, over the client library: every
+// failure or refusal is logged at WARN with the simulator's own message, so
+// that a user always sees why an action did nothing, and the brick the user
+// holds is tracked.
 
 #include <optional>
 #include <string>
@@ -10,23 +10,29 @@
 
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Twist.h>
-#include <ros/ros.h>
+#include <ros/node_handle.h>
 
 #include <Eigen/Core>
 
 #include "brick_stack_sim/Brick.h"
+#include "brick_stack_sim/client/sim_client.h"
+#include "brick_stack_sim/ros/interface_names.h"
 
 namespace brick_stack_sim {
 namespace teleop {
 
-/// The frame of every pose the simulator takes and gives (DESIGN.md section 3).
-constexpr char kWorldFrame[] = "world";
+/// The frame of every pose the simulator takes and gives.
+using ros_adapter::kWorldFrame;
 
-class SimClient {
+/// One user's session with the simulator whose private namespace is
+/// `sim_namespace`: its services through one client::SimClient (persistent
+/// connections), its ~held_target, and the brick the user holds. Used from
+/// one thread (the node's spin or key loop).
+class SimSession {
  public:
-  /// Clients of the services of the simulator whose private namespace is
-  /// `sim_namespace` (e.g. "/brick_sim"), and the publisher of its ~held_target.
-  SimClient(ros::NodeHandle node_handle, const std::string& sim_namespace);
+  /// Advertises ~held_target at once, so that the simulator is connected to
+  /// it before the first grasp.
+  SimSession(ros::NodeHandle node_handle, const std::string& sim_namespace);
 
   /// Waits up to `timeout` [s] for the simulator's services, logs whether it
   /// came up, and returns whether it did. Nothing depends on the answer: each
@@ -50,27 +56,19 @@ class SimClient {
   /// Publishes `pose` as ~held_target (frame world), while a brick is held.
   void publishHeldTarget(const geometry_msgs::Pose& pose);
 
-  /// The brick this client grasped and has not released, if any.
+  /// The brick this session grasped and has not released, if any.
   const std::optional<std::string>& held() const { return held_; }
   /// Forgets the held brick when the simulator no longer reports it HELD (it
   /// was removed, the scene was reset, someone else released it).
   void refreshHeld();
 
-  const std::string& simNamespace() const { return sim_namespace_; }
+  const std::string& simNamespace() const { return sim_.options().sim_namespace; }
 
  private:
-  /// Calls `client` after waiting for it for a moment; logs why when the
-  /// call fails or the simulator refuses.
-  template <typename Service>
-  bool call(ros::ServiceClient& client, Service& service);
+  /// Whether `reply` is an acceptance; logs why not.
+  bool accepted(const client::CallResult& reply) const;
 
-  std::string sim_namespace_;
-  ros::NodeHandle node_handle_;
-  ros::ServiceClient get_bricks_;
-  ros::ServiceClient place_brick_;
-  ros::ServiceClient grasp_brick_;
-  ros::ServiceClient release_brick_;
-  ros::Publisher held_target_;
+  client::SimClient sim_;
   std::optional<std::string> held_;
 };
 
