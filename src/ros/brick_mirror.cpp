@@ -42,6 +42,61 @@ MirroredBrick mirrored(const BrickWorld& world, BrickSnapshot snapshot) {
   return brick;
 }
 
+/// Nothing a subscriber sees of the brick differs.
+bool unchanged(const MirroredBrick& before, const MirroredBrick& now) {
+  return sameSnapshot(before.snapshot, now.snapshot) && before.described == now.described &&
+         (!now.described || sameGeometry(before.geometry, now.geometry));
+}
+
+// BrickMirror::update's two passes over the mirror after a partial read.
+
+/// Moves the bricks whose serials are not among `serials` (the world's, in
+/// rising order) from `bricks` to `removed`. Serials rise in placement
+/// order and are never reused: the world's list is the mirror's minus the
+/// removed bricks, plus new ones at its end. The mirror is kept in place
+/// (a settled scene moves none of its entries).
+void dropRemoved(const std::vector<unsigned>& serials, std::vector<MirroredBrick>* bricks,
+                 std::vector<MirroredBrick>* removed) {
+  std::size_t kept = 0;
+  std::size_t next_serial = 0;
+  for (std::size_t i = 0; i < bricks->size(); ++i) {
+    const unsigned serial = (*bricks)[i].snapshot.serial;
+    while (next_serial < serials.size() && serials[next_serial] < serial) ++next_serial;
+    if (next_serial < serials.size() && serials[next_serial] == serial) {
+      if (kept != i) (*bricks)[kept] = std::move((*bricks)[i]);
+      ++kept;
+      ++next_serial;
+    } else {
+      removed->push_back(std::move((*bricks)[i]));
+    }
+  }
+  bricks->resize(kept);
+}
+
+/// Brings `bricks` up to the snapshots read (`fresh`, in placement order),
+/// walked beside the mirror: a brick that differs replaces its entry, a new
+/// one is inserted; both are listed in `changes`.
+void mergeFresh(const BrickWorld& world, std::vector<BrickSnapshot> fresh,
+                std::vector<MirroredBrick>* bricks, BrickMirror::Changes* changes) {
+  std::size_t at = 0;
+  for (BrickSnapshot& snapshot : fresh) {
+    while (at < bricks->size() && (*bricks)[at].snapshot.serial < snapshot.serial) ++at;
+    MirroredBrick now = mirrored(world, std::move(snapshot));
+    if (at < bricks->size() && (*bricks)[at].snapshot.serial == now.snapshot.serial) {
+      MirroredBrick& before = (*bricks)[at];
+      if (unchanged(before, now)) continue;
+      changes->changed.push_back(at);
+      if (before.snapshot.pose.matrix() != now.snapshot.pose.matrix()) changes->moved.push_back(at);
+      before = std::move(now);
+      continue;
+    }
+    // New: after every brick the mirror had, since serials only rise.
+    bricks->insert(bricks->begin() + static_cast<std::ptrdiff_t>(at), std::move(now));
+    changes->changed.push_back(at);
+    changes->moved.push_back(at);
+  }
+}
+
 }  // namespace
 
 BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
@@ -68,44 +123,8 @@ BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
     }
     return changes;
   }
-
-  // Serials rise in placement order and are never reused: the world's list
-  // is the mirror's minus the removed bricks, plus new ones at its end. The
-  // mirror is kept in place (a settled scene moves none of its entries).
-  std::size_t kept = 0;
-  std::size_t next_serial = 0;
-  for (std::size_t i = 0; i < bricks_.size(); ++i) {
-    const unsigned serial = bricks_[i].snapshot.serial;
-    while (next_serial < serials.size() && serials[next_serial] < serial) ++next_serial;
-    if (next_serial < serials.size() && serials[next_serial] == serial) {
-      if (kept != i) bricks_[kept] = std::move(bricks_[i]);
-      ++kept;
-      ++next_serial;
-    } else {
-      changes.removed.push_back(std::move(bricks_[i]));
-    }
-  }
-  bricks_.resize(kept);
-  // The snapshots read, in placement order, walked beside the mirror.
-  std::size_t at = 0;
-  for (BrickSnapshot& snapshot : fresh) {
-    while (at < bricks_.size() && bricks_[at].snapshot.serial < snapshot.serial) ++at;
-    MirroredBrick now = mirrored(world, std::move(snapshot));
-    if (at < bricks_.size() && bricks_[at].snapshot.serial == now.snapshot.serial) {
-      MirroredBrick& before = bricks_[at];
-      if (sameSnapshot(before.snapshot, now.snapshot) && before.described == now.described &&
-          (!now.described || sameGeometry(before.geometry, now.geometry)))
-        continue;
-      changes.changed.push_back(at);
-      if (before.snapshot.pose.matrix() != now.snapshot.pose.matrix()) changes.moved.push_back(at);
-      before = std::move(now);
-      continue;
-    }
-    // New: after every brick the mirror had, since serials only rise.
-    bricks_.insert(bricks_.begin() + static_cast<std::ptrdiff_t>(at), std::move(now));
-    changes.changed.push_back(at);
-    changes.moved.push_back(at);
-  }
+  dropRemoved(serials, &bricks_, &changes.removed);
+  mergeFresh(world, std::move(fresh), &bricks_, &changes);
   return changes;
 }
 

@@ -71,6 +71,50 @@ Status findTypes(const BrickTypeLibrary& types, const BrickType** kapla, const B
   return Status::success();
 }
 
+// The scenes of motionScene that take more than a brick or two.
+
+/// A cube sliding down an inclined KAPLA. The KAPLA rises towards +x at
+/// angle a, its lower edge on the table at x = 0, resting near its upper end
+/// on the edge of a column of KAPLAs (along y) that stands where its
+/// underside is a column high.
+void inclineBricks(const BrickType& kapla, const BrickType& cube,
+                   std::vector<ScheduledBrick>* bricks) {
+  const double length = kapla.size.x(), width = kapla.size.y(), thickness = kapla.size.z();
+  const double height = kInclineSupportLayers * thickness;
+  const double column_edge = height / std::tan(kInclineAngle);
+  for (int layer = 0; layer < kInclineSupportLayers; ++layer)
+    bricks->push_back(
+        brickAt("s" + std::to_string(layer), kapla.name,
+                {column_edge + 0.5 * width, 0.0, (layer + 0.5) * thickness},
+                Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix()));
+  const Eigen::Matrix3d orientation = pitch(-kInclineAngle);
+  const Eigen::Vector3d along = orientation.col(0), normal = orientation.col(2);
+  const Eigen::Vector3d board = 0.5 * length * along + 0.5 * thickness * normal;
+  bricks->push_back(brickAt("board", kapla.name, board, orientation));
+  bricks->push_back(brickAt(
+      "slider", cube.name,
+      board + 0.5 * (thickness + cube.size.z()) * normal + kInclineStart * along, orientation));
+}
+
+/// A row of standing KAPLAs, the first set turning towards the others.
+void dominoBricks(const BrickType& kapla, std::vector<ScheduledBrick>* bricks) {
+  const double length = kapla.size.x(), thickness = kapla.size.z();
+  const double spacing = kDominoSpacing * length;
+  for (int i = 0; i < kDominoes; ++i) {
+    // Base's +x edge: the row starts at x = -0.45.
+    ScheduledBrick domino =
+        standing("d" + std::to_string(i), kapla, -0.45 + i * spacing + thickness, 0.0);
+    if (i == 0) {
+      // Turning about its front edge: the centre moves at w x (its
+      // offset from the edge), (w L / 2, 0, w T / 2).
+      domino.placement.angular_velocity = Eigen::Vector3d(0.0, kDominoSpin, 0.0);
+      domino.placement.linear_velocity =
+          kDominoSpin * Eigen::Vector3d(0.5 * length, 0.0, 0.5 * thickness);
+    }
+    bricks->push_back(domino);
+  }
+}
+
 }  // namespace
 
 std::string motionCaseName(MotionCase motion) {
@@ -91,7 +135,7 @@ Status motionScene(MotionCase motion, const BrickTypeLibrary& types, Scene* scen
   scene->name = motionCaseName(motion);
   scene->table = TableOptions();
   std::vector<ScheduledBrick>& bricks = scene->bricks;
-  const double length = kapla->size.x(), width = kapla->size.y(), thickness = kapla->size.z();
+  const double thickness = kapla->size.z();
   switch (motion) {
     case MotionCase::kSlide: {
       bricks.push_back(brickAt("slider", kapla->name, {-0.3, 0.0, 0.5 * thickness},
@@ -99,27 +143,9 @@ Status motionScene(MotionCase motion, const BrickTypeLibrary& types, Scene* scen
       bricks.back().placement.linear_velocity = Eigen::Vector3d(kSlideSpeed, 0.0, 0.0);
       break;
     }
-    case MotionCase::kIncline: {
-      // A KAPLA rising towards +x at angle a, its lower edge on the table at
-      // x = 0, resting near its upper end on the edge of a column of KAPLAs
-      // (along y) that stands where its underside is a column high.
-      const double height = kInclineSupportLayers * thickness;
-      const double column_edge = height / std::tan(kInclineAngle);
-      for (int layer = 0; layer < kInclineSupportLayers; ++layer)
-        bricks.push_back(brickAt("s" + std::to_string(layer), kapla->name,
-                                 {column_edge + 0.5 * width, 0.0, (layer + 0.5) * thickness},
-                                 Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ())
-                                     .toRotationMatrix()));
-      const Eigen::Matrix3d orientation = pitch(-kInclineAngle);
-      const Eigen::Vector3d along = orientation.col(0), normal = orientation.col(2);
-      const Eigen::Vector3d board = 0.5 * length * along + 0.5 * thickness * normal;
-      bricks.push_back(brickAt("board", kapla->name, board, orientation));
-      bricks.push_back(brickAt("slider", cube->name,
-                               board + 0.5 * (thickness + cube->size.z()) * normal +
-                                   kInclineStart * along,
-                               orientation));
+    case MotionCase::kIncline:
+      inclineBricks(*kapla, *cube, &bricks);
       break;
-    }
     case MotionCase::kTopple:
       bricks.push_back(standing("slider", *kapla, 0.0, balanceAngle(*kapla) + kToppleStart));
       break;
@@ -128,23 +154,9 @@ Status motionScene(MotionCase motion, const BrickTypeLibrary& types, Scene* scen
           brickAt("slider", kapla->name, {-0.2, 0.0, kThrowHeight}, Eigen::Matrix3d::Identity()));
       bricks.back().placement.linear_velocity = kThrow;
       break;
-    case MotionCase::kDomino: {
-      const double spacing = kDominoSpacing * length;
-      for (int i = 0; i < kDominoes; ++i) {
-        // Base's +x edge: the row starts at x = -0.45.
-        ScheduledBrick domino =
-            standing("d" + std::to_string(i), *kapla, -0.45 + i * spacing + thickness, 0.0);
-        if (i == 0) {
-          // Turning about its front edge: the centre moves at w x (its
-          // offset from the edge), (w L / 2, 0, w T / 2).
-          domino.placement.angular_velocity = Eigen::Vector3d(0.0, kDominoSpin, 0.0);
-          domino.placement.linear_velocity =
-              kDominoSpin * Eigen::Vector3d(0.5 * length, 0.0, 0.5 * thickness);
-        }
-        bricks.push_back(domino);
-      }
+    case MotionCase::kDomino:
+      dominoBricks(*kapla, &bricks);
       break;
-    }
   }
   return Status::success();
 }

@@ -37,6 +37,88 @@ std::string modeLines() {
   return text;
 }
 
+/// Flags with a value other than --config, in the order given.
+using FlagValues = std::vector<std::pair<std::string, std::string>>;
+
+// parseRunCommandLine's steps: the arguments are sorted first, and the flags
+// applied once the config files are read.
+
+/// Sorts the arguments: switches and --config files into `result` and
+/// `no_sleep`, every other flag with its value into `overrides`. An unknown
+/// flag, a stray argument or a flag without its value is an error.
+Status collectFlags(const std::vector<std::string>& args, RunCommandLine* result, bool* no_sleep,
+                    FlagValues* overrides) {
+  static const std::set<std::string> kWithValue = {
+      "--config",     "--scene",  "--mode",  "--duration",  "--time-step",
+      "--iterations", "--report", "--types", "--materials", "--scene-dir"};
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--help" || flag == "-h") {
+      result->help = true;
+      continue;
+    }
+    if (flag == "--no-sleep") {
+      *no_sleep = true;
+      continue;
+    }
+    if (flag == "--skip-bad-bricks") {
+      result->skip_bad_bricks = true;
+      continue;
+    }
+    if (flag.rfind("--", 0) != 0) return Status::error("unexpected argument '" + flag + "'");
+    if (!kWithValue.count(flag)) return Status::error("unknown option '" + flag + "' (see --help)");
+    if (i + 1 >= args.size()) return Status::error(flag + " needs a value");
+    const std::string& value = args[++i];
+    if (flag == "--config") {
+      result->config_files.push_back(value);
+    } else {
+      overrides->emplace_back(flag, value);
+    }
+  }
+  return Status::success();
+}
+
+/// Applies the flags over the config files' settings in `result`; the
+/// first malformed value is an error naming its flag.
+Status applyFlags(const FlagValues& overrides, RunCommandLine* result) {
+  WorldOptions& world = result->config.world;
+  DataOptions& data = result->config.data;
+  bool scene_dirs_given = false;
+  for (const auto& [flag, value] : overrides) {
+    Status parsed;
+    if (flag == "--scene") {
+      data.scene = value;
+    } else if (flag == "--mode") {
+      world.stability.mode = value;
+      parsed = checkStabilityMode(value);
+    } else if (flag == "--duration") {
+      double duration = 0.0;
+      parsed = parseDouble(flag, value, &duration);
+      if (parsed && (duration < 0.0 || duration > kMaxSceneTime))
+        parsed = Status::error("--duration must be in [0, " +
+                               std::to_string(static_cast<long>(kMaxSceneTime)) + "] s");
+      result->duration = duration;
+    } else if (flag == "--time-step") {
+      parsed = parseDouble(flag, value, &world.time_step);
+    } else if (flag == "--iterations") {
+      parsed = parseInt(flag, value, &world.solver_iterations);
+    } else if (flag == "--report") {
+      result->report_path = value;
+    } else if (flag == "--types") {
+      data.types_urdf = value;
+    } else if (flag == "--materials") {
+      data.materials_yaml = value;
+    } else if (flag == "--scene-dir") {
+      // The flags replace the config's directories rather than add to them.
+      if (!scene_dirs_given) data.scene_dirs.clear();
+      scene_dirs_given = true;
+      data.scene_dirs.push_back(value);
+    }
+    if (!parsed) return parsed;
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 std::string runUsage(const std::string& data_dir) {
@@ -69,35 +151,10 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
                            RunCommandLine* command_line) {
   RunCommandLine result;
   // Flags are applied after the config files, whatever their order.
-  std::vector<std::pair<std::string, std::string>> overrides;
+  FlagValues overrides;
   bool no_sleep = false;
-  static const std::set<std::string> kWithValue = {
-      "--config",     "--scene",  "--mode",  "--duration",  "--time-step",
-      "--iterations", "--report", "--types", "--materials", "--scene-dir"};
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (flag == "--help" || flag == "-h") {
-      result.help = true;
-      continue;
-    }
-    if (flag == "--no-sleep") {
-      no_sleep = true;
-      continue;
-    }
-    if (flag == "--skip-bad-bricks") {
-      result.skip_bad_bricks = true;
-      continue;
-    }
-    if (flag.rfind("--", 0) != 0) return Status::error("unexpected argument '" + flag + "'");
-    if (!kWithValue.count(flag)) return Status::error("unknown option '" + flag + "' (see --help)");
-    if (i + 1 >= args.size()) return Status::error(flag + " needs a value");
-    const std::string& value = args[++i];
-    if (flag == "--config") {
-      result.config_files.push_back(value);
-    } else {
-      overrides.emplace_back(flag, value);
-    }
-  }
+  if (Status collected = collectFlags(args, &result, &no_sleep, &overrides); !collected)
+    return collected;
   if (result.help) {
     *command_line = result;
     return Status::success();
@@ -106,48 +163,15 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
     if (Status loaded = loadSimulationConfig(result.config_files, &result.config); !loaded)
       return loaded;
   }
-  WorldOptions& world = result.config.world;
+  if (no_sleep) result.config.world.sleeping.enabled = false;
+  if (Status applied = applyFlags(overrides, &result); !applied) return applied;
   DataOptions& data = result.config.data;
-  bool scene_dirs_given = false;
-  if (no_sleep) world.sleeping.enabled = false;
-  for (const auto& [flag, value] : overrides) {
-    Status parsed;
-    if (flag == "--scene") {
-      data.scene = value;
-    } else if (flag == "--mode") {
-      world.stability.mode = value;
-      parsed = checkStabilityMode(value);
-    } else if (flag == "--duration") {
-      double duration = 0.0;
-      parsed = parseDouble(flag, value, &duration);
-      if (parsed && (duration < 0.0 || duration > kMaxSceneTime))
-        parsed = Status::error("--duration must be in [0, " +
-                               std::to_string(static_cast<long>(kMaxSceneTime)) + "] s");
-      result.duration = duration;
-    } else if (flag == "--time-step") {
-      parsed = parseDouble(flag, value, &world.time_step);
-    } else if (flag == "--iterations") {
-      parsed = parseInt(flag, value, &world.solver_iterations);
-    } else if (flag == "--report") {
-      result.report_path = value;
-    } else if (flag == "--types") {
-      data.types_urdf = value;
-    } else if (flag == "--materials") {
-      data.materials_yaml = value;
-    } else if (flag == "--scene-dir") {
-      // The flags replace the config's directories rather than add to them.
-      if (!scene_dirs_given) data.scene_dirs.clear();
-      scene_dirs_given = true;
-      data.scene_dirs.push_back(value);
-    }
-    if (!parsed) return parsed;
-  }
   if (data.scene.empty())
     return Status::error("--scene is required (or a config with `scene`; see --help)");
   if (data.types_urdf.empty()) data.types_urdf = data_dir + "/urdf/bricks.urdf";
   if (data.materials_yaml.empty()) data.materials_yaml = data_dir + "/config/bricks.yaml";
   if (data.scene_dirs.empty()) data.scene_dirs.push_back(data_dir + "/scenes");
-  if (Status valid = validate(world); !valid) {
+  if (Status valid = validate(result.config.world); !valid) {
     valid.message = "bad setting: " + valid.message;
     return valid;
   }

@@ -79,9 +79,13 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   return Status::success();
 }
 
-std::string toJson(const RunReport& r) {
-  JsonWriter json;
-  json.beginObject();
+namespace {
+
+// toJson's parts, one per section of the report, written in the order the
+// report's readers (scripts/, the benchmark tables) expect.
+
+/// The run's settings and counters: everything that is one number per run.
+void writeRunSummary(const RunReport& r, JsonWriter& json) {
   json.key("scene").value(r.scene);
   json.key("mode").value(r.world.stability.mode);
   json.key("time_step").value(r.world.time_step);
@@ -96,6 +100,11 @@ std::string toJson(const RunReport& r) {
   json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
   json.key("lost").value(static_cast<unsigned long long>(r.lost()));
   json.key("missing").value(static_cast<unsigned long long>(r.missing()));
+}
+
+/// What the run cost: counts that are reproducible, then the stages' wall
+/// times, which are not.
+void writeRunCost(const RunReport& r, JsonWriter& json) {
   json.key("cost").beginObject();
   json.key("bullet_steps").value(static_cast<unsigned long long>(r.cost.bullet_steps));
   json.key("awake_brick_steps").value(static_cast<unsigned long long>(r.cost.awake_brick_steps));
@@ -107,7 +116,10 @@ std::string toJson(const RunReport& r) {
   json.key("contacts").value(r.cost.contact_seconds);
   json.key("stability").value(r.cost.stability_seconds);
   json.endObject();
-  json.key("max_displacement").value(r.maxDisplacement());
+}
+
+/// Each brick's final pose and how far it ended from where it was placed.
+void writeBrickOutcomes(const RunReport& r, JsonWriter& json) {
   json.key("bricks").beginArray();
   for (const BrickOutcome& outcome : r.bricks) {
     const BrickSnapshot& b = outcome.brick;
@@ -126,6 +138,10 @@ std::string toJson(const RunReport& r) {
     json.endObject();
   }
   json.endArray();
+}
+
+/// The events of the run in order; "affected" only where there were any.
+void writeEvents(const RunReport& r, JsonWriter& json) {
   json.key("events").beginArray();
   for (const SimEvent& e : r.events) {
     json.beginObject();
@@ -141,6 +157,10 @@ std::string toJson(const RunReport& r) {
     json.endObject();
   }
   json.endArray();
+}
+
+/// The scene's placements that the world refused, and why.
+void writeRefused(const RunReport& r, JsonWriter& json) {
   json.key("refused").beginArray();
   for (const RefusedPlacement& refused : r.refused) {
     json.beginObject();
@@ -150,6 +170,19 @@ std::string toJson(const RunReport& r) {
     json.endObject();
   }
   json.endArray();
+}
+
+}  // namespace
+
+std::string toJson(const RunReport& r) {
+  JsonWriter json;
+  json.beginObject();
+  writeRunSummary(r, json);
+  writeRunCost(r, json);
+  json.key("max_displacement").value(r.maxDisplacement());
+  writeBrickOutcomes(r, json);
+  writeEvents(r, json);
+  writeRefused(r, json);
   json.endObject();
   return json.str() + "\n";
 }

@@ -58,6 +58,71 @@ double leastFriction(const std::vector<SupportPatch>& patches) {
   return friction;
 }
 
+// ComCriterion::passLoadDown's steps, in the order it takes them.
+
+/// COM-above before any push, into `com_above`: the centre of a brick's
+/// own mass and the shares it receives, each share where it acts and at
+/// the height of what passed it down. Returns that total mass [kg].
+double massAbove(const SupportGraph::Node& node, Eigen::Vector3d* com_above) {
+  double mass = node.mass;
+  Eigen::Vector3d moment = node.mass * node.com;
+  for (const LoadShare& load : node.received) {
+    mass += load.mass;
+    moment += load.mass * Eigen::Vector3d(load.point.x(), load.point.y(), load.height);
+  }
+  *com_above = moment / mass;
+  return mass;
+}
+
+/// Leaning bricks, movers and held bricks push the brick: the resultant
+/// crosses its support plane where it would tip about, and its sideways
+/// part must stay in friction. Moves `com_above` and `mass` to the
+/// resultant and judges the support there again; a sideways part beyond
+/// friction wakes it (`stays` false) and is cut to what friction passes on.
+/// False, and it wakes, when the pushes lift it.
+bool resolvePushes(BodyHandle handle, SupportGraph::Node* node, double* mass,
+                   Eigen::Vector3d* com_above, Resultant* resultant, bool* stays,
+                   std::vector<WakeDecision>* unstable) {
+  if (!resultantOnPlane(*mass, com_above->head<2>(), node->pushes, node->stability.support_height,
+                        resultant)) {
+    unstable->push_back(WakeDecision{handle, WakeCause::kOutsideSupport, handle, 0.0,
+                                     "what presses on it lifts it"});
+    return false;
+  }
+  com_above->head<2>() = resultant->point;
+  node->stability.mass_above = *mass = resultant->mass;
+  evaluateSupport(*com_above, &node->stability);
+  const double holds = leastFriction(node->supports) * *mass * kGravity;
+  if (resultant->sideways.norm() > holds) {
+    unstable->push_back(WakeDecision{
+        handle, WakeCause::kOutsideSupport, handle, node->stability.margin,
+        "what presses on it pushes it sideways with " + newtons(resultant->sideways.norm()) +
+            ", more than friction holds (" + newtons(holds) + ")"});
+    *stays = false;
+    resultant->sideways *= holds / resultant->sideways.norm();  // all friction passes on
+  }
+  return true;
+}
+
+/// Each frozen supporter of `node` receives its share of the brick's
+/// `mass`, at `height` (the table carries anything), and, in proportion,
+/// the `sideways` part of its load, which friction at the interface carries.
+void passSharesDown(SupportGraph* graph, const SupportGraph::Node& node, double mass, double height,
+                    const Eigen::Vector2d& sideways, std::vector<LoadShare>* shares) {
+  for (std::size_t i = 0; i < node.supports.size(); ++i) {
+    SupportGraph::Node* below = graph->find(node.supports[i].supporter);
+    if (!below) continue;  // the table carries anything
+    LoadShare& share = (*shares)[i];
+    share.height = height;
+    below->received.push_back(share);
+    // Friction at the interface carries the sideways part, in proportion.
+    if (!sideways.isZero())
+      below->pushes.push_back(
+          PointForce{Eigen::Vector3d(sideways.x(), sideways.y(), 0.0) * (share.mass / mass),
+                     Eigen::Vector3d(share.point.x(), share.point.y(), node.supports[i].height)});
+  }
+}
+
 }  // namespace
 
 ComCriterion::ComCriterion(const StabilityOptions& options, BodyNamer name_of)
@@ -183,13 +248,8 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
   // COM-above: the resultant of its own weight and the loads it receives,
   // each where it acts, at the height of the centre of mass of it and all
   // it carries (each share at the height of what passed it down).
-  double mass = node.mass;
-  Eigen::Vector3d moment = node.mass * node.com;
-  for (const LoadShare& load : node.received) {
-    mass += load.mass;
-    moment += load.mass * Eigen::Vector3d(load.point.x(), load.point.y(), load.height);
-  }
-  Eigen::Vector3d com_above = moment / mass;
+  Eigen::Vector3d com_above;
+  double mass = massAbove(node, &com_above);
   node.stability.frozen = true;
   node.stability.mass_above = mass;
   node.stability.supports = node.supports;
@@ -197,29 +257,9 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
   bool stays = true;
   Resultant resultant;
   resultant.mass = mass;
-  if (!node.pushes.empty()) {
-    // Leaning bricks, movers and held bricks push it: the resultant crosses
-    // its support plane where it would tip about, and its sideways part
-    // must stay in friction.
-    if (!resultantOnPlane(mass, com_above.head<2>(), node.pushes, node.stability.support_height,
-                          &resultant)) {
-      unstable->push_back(WakeDecision{handle, WakeCause::kOutsideSupport, handle, 0.0,
-                                       "what presses on it lifts it"});
-      return false;
-    }
-    com_above.head<2>() = resultant.point;
-    node.stability.mass_above = mass = resultant.mass;
-    evaluateSupport(com_above, &node.stability);
-    const double holds = leastFriction(node.supports) * mass * kGravity;
-    if (resultant.sideways.norm() > holds) {
-      unstable->push_back(WakeDecision{
-          handle, WakeCause::kOutsideSupport, handle, node.stability.margin,
-          "what presses on it pushes it sideways with " + newtons(resultant.sideways.norm()) +
-              ", more than friction holds (" + newtons(holds) + ")"});
-      stays = false;
-      resultant.sideways *= holds / resultant.sideways.norm();  // all friction passes on
-    }
-  }
+  if (!node.pushes.empty() &&
+      !resolvePushes(handle, &node, &mass, &com_above, &resultant, &stays, unstable))
+    return false;
   node.supports = node.stability.supports;  // keep the hulls
   Eigen::Vector2d acts_at = com_above.head<2>();
   if (stays && node.stability.margin <= options_.min_margin) {
@@ -236,19 +276,7 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
     if (stays) unstable->push_back(outsideSupport(handle, node.stability.margin));
     return false;
   }
-  for (std::size_t i = 0; i < node.supports.size(); ++i) {
-    SupportGraph::Node* below = graph->find(node.supports[i].supporter);
-    if (!below) continue;  // the table carries anything
-    LoadShare& share = (*shares)[i];
-    share.height = com_above.z();
-    below->received.push_back(share);
-    // Friction at the interface carries the sideways part, in proportion.
-    if (!resultant.sideways.isZero())
-      below->pushes.push_back(
-          PointForce{Eigen::Vector3d(resultant.sideways.x(), resultant.sideways.y(), 0.0) *
-                         (share.mass / mass),
-                     Eigen::Vector3d(share.point.x(), share.point.y(), node.supports[i].height)});
-  }
+  passSharesDown(graph, node, mass, com_above.z(), resultant.sideways, shares);
   return stays;
 }
 

@@ -243,6 +243,9 @@ class BasisNames {
               int index) { names[name] = status[index]; });
   }
 
+  /// Forgets the basis: never start from a failure's.
+  void forget() const { *warm_.basis = StaticsBasis(); }
+
  private:
   template <typename Visit>
   void visit(Visit&& name) const {
@@ -273,6 +276,68 @@ class BasisNames {
   std::size_t bodies_;
 };
 
+// solveStatics's steps after building the LP.
+
+/// Solves `lp` into `model`, from the basis `names` finds in the warm start
+/// when there is one, which then keeps the final basis for the next solve.
+bool solveFromWarmStart(const EquilibriumLp& lp, const BasisNames* names, ClpSimplex* model,
+                        int* iterations) {
+  if (!names) return lp.solve(model, nullptr, iterations);
+  const std::vector<unsigned char> start = names->start();
+  const bool solved = lp.solve(model, &start, iterations);
+  if (solved) {
+    names->keep(*model);
+  } else {
+    names->forget();
+  }
+  return solved;
+}
+
+/// Each free body's imbalance in the solution `x`: the sum of its rows'
+/// surplus and deficit columns. Returns the total over all bodies.
+double readImbalance(const EquilibriumLp& lp, const double* x, int first_imbalance,
+                     std::vector<double>* imbalance) {
+  double total = 0.0;
+  for (std::size_t i = 0; i < imbalance->size(); ++i) {
+    const int row = lp.rowOf(static_cast<int>(i));
+    if (row < 0) continue;
+    for (int k = 0; k < 6; ++k)
+      (*imbalance)[i] +=
+          x[first_imbalance + 2 * (row + k)] + x[first_imbalance + 2 * (row + k) + 1];
+    total += (*imbalance)[i];
+  }
+  return total;
+}
+
+/// Each contact's force in the solution `x`, its cone edges weighted by
+/// their columns, back from weight units to newtons.
+void readContactForces(const EquilibriumLp& lp, const double* x,
+                       const std::vector<int>& first_column,
+                       const std::vector<std::vector<Eigen::Vector3d>>& edges,
+                       std::vector<Eigen::Vector3d>* forces) {
+  for (std::size_t c = 0; c < forces->size(); ++c) {
+    if (first_column[c] < 0) continue;
+    for (std::size_t j = 0; j < edges[c].size(); ++j)
+      (*forces)[c] += x[first_column[c] + j] * lp.weightUnit() * edges[c][j];
+  }
+}
+
+/// The bodies of the collapse mechanism of an infeasible LP. The dual of
+/// "least imbalance" is a velocity per row (a body's translation, and
+/// rotation times the problem's size), at most 1 each, in which no contact
+/// does positive work (reduced costs of the force columns >= 0) and the
+/// loads' work is the least imbalance. The bodies it moves are the
+/// mechanism; those it leaves still are held.
+void markMechanism(const EquilibriumLp& lp, const ClpSimplex& model, std::vector<bool>* moves) {
+  const double* velocity = model.dualRowSolution();
+  for (std::size_t i = 0; i < moves->size(); ++i) {
+    const int row = lp.rowOf(static_cast<int>(i));
+    if (row < 0) continue;
+    for (int k = 0; k < 6; ++k)
+      if (std::abs(velocity[row + k]) > kMoving) (*moves)[i] = true;
+  }
+}
+
 }  // namespace
 
 StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
@@ -294,23 +359,13 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
   lp.addImbalanceColumns();
 
   std::unique_ptr<BasisNames> names;  // set when warm-started
-  std::vector<unsigned char> start;
   if (warm && warm->basis && warm->body_keys.size() == bodies.size() &&
       warm->contact_keys.size() == contacts.size()) {
     names = std::make_unique<BasisNames>(*warm, lp, first_column, edges, first_imbalance,
                                          bodies.size());
-    start = names->start();
   }
   ClpSimplex model;
-  const bool solved = lp.solve(&model, names ? &start : nullptr, &solution.iterations);
-  if (names) {
-    if (solved) {
-      names->keep(model);
-    } else {
-      *warm->basis = StaticsBasis();  // never start from a failure's basis
-    }
-  }
-  if (!solved) {
+  if (!solveFromWarmStart(lp, names.get(), &model, &solution.iterations)) {
     // With imbalance columns the LP is always feasible and bounded.
     solution.message = "the statics LP did not solve (Clp status " +
                        std::to_string(model.status()) + ", secondary " +
@@ -319,37 +374,12 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
   }
   solution.solved = true;
   const double* x = model.getColSolution();
-  double total = 0.0;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const int row = lp.rowOf(static_cast<int>(i));
-    if (row < 0) continue;
-    for (int k = 0; k < 6; ++k)
-      solution.imbalance[i] +=
-          x[first_imbalance + 2 * (row + k)] + x[first_imbalance + 2 * (row + k) + 1];
-    total += solution.imbalance[i];
-  }
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    if (first_column[c] < 0) continue;
-    for (std::size_t j = 0; j < edges[c].size(); ++j)
-      solution.forces[c] += x[first_column[c] + j] * lp.weightUnit() * edges[c][j];
-  }
+  const double total = readImbalance(lp, x, first_imbalance, &solution.imbalance);
+  readContactForces(lp, x, first_column, edges, &solution.forces);
   solution.feasible = total <= options.tolerance * std::max<std::size_t>(1, bodies.size());
   for (double& value : solution.imbalance)
     if (value <= options.tolerance) value = 0.0;
-  if (!solution.feasible) {
-    // The dual of "least imbalance" is a velocity per row (a body's
-    // translation, and rotation times the problem's size), at most 1 each,
-    // in which no contact does positive work (reduced costs of the force
-    // columns >= 0) and the loads' work is the least imbalance. The bodies
-    // it moves are the mechanism; those it leaves still are held.
-    const double* velocity = model.dualRowSolution();
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-      const int row = lp.rowOf(static_cast<int>(i));
-      if (row < 0) continue;
-      for (int k = 0; k < 6; ++k)
-        if (std::abs(velocity[row + k]) > kMoving) solution.moves[i] = true;
-    }
-  }
+  if (!solution.feasible) markMechanism(lp, model, &solution.moves);
   return solution;
 }
 

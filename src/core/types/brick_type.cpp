@@ -37,6 +37,51 @@ Status readMaterial(OptionsReader& reader, BrickType* type) {
   return Status::success();
 }
 
+// BrickTypeLibrary::parse's steps, link by link and then over the materials.
+
+/// The box a link is drawn as: its collision geometry's, else its visual
+/// one's; null when that is no box.
+urdf::BoxSharedPtr boxOf(const urdf::Link& link) {
+  urdf::GeometrySharedPtr geometry;
+  if (link.collision) geometry = link.collision->geometry;
+  if (!geometry && link.visual) geometry = link.visual->geometry;
+  return std::dynamic_pointer_cast<urdf::Box>(geometry);
+}
+
+/// The brick type of a link drawn as `box`: size, mass and inertia from the
+/// URDF; friction, restitution and rolling friction from `defaults`, over
+/// which its own section of `own_materials` (when it has one) is read.
+Status brickTypeOfLink(const urdf::Link& link, const urdf::Box& box, const BrickType& defaults,
+                       const ParameterValue* own_materials, BrickType* type) {
+  if (!link.inertial) return Status::error("link '" + link.name + "' has no <inertial>");
+  *type = defaults;
+  type->name = link.name;
+  type->size = Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z);
+  type->mass = link.inertial->mass;
+  type->inertia = Eigen::Vector3d(link.inertial->ixx, link.inertial->iyy, link.inertial->izz);
+  const double off_diagonal =
+      std::abs(link.inertial->ixy) + std::abs(link.inertial->ixz) + std::abs(link.inertial->iyz);
+  if (off_diagonal > 1e-9 * type->inertia.cwiseAbs().sum())
+    return Status::error("link '" + link.name +
+                         "': inertia must be diagonal in the box frame (a uniform box)");
+  if (const ParameterValue* own = own_materials ? own_materials->find(type->name) : nullptr) {
+    OptionsReader own_reader(*own, "types/" + type->name + "/");
+    if (Status read = readMaterial(own_reader, type); !read)
+      return prefixed("brick materials yaml: ", read);
+  }
+  return Status::success();
+}
+
+/// A material section for a type the URDF does not define is a typo, not
+/// something to ignore.
+Status materialsNameKnownTypes(const ParameterValue* own_materials, const BrickTypeLibrary& types) {
+  if (!own_materials) return Status::success();
+  for (const auto& [name, material] : own_materials->map())
+    if (!types.find(name))
+      return Status::error("materials name type '" + name + "' that the URDF does not define");
+  return Status::success();
+}
+
 }  // namespace
 
 Status validateBrickType(const BrickType& t) {
@@ -126,38 +171,18 @@ Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& m
 
   BrickTypeLibrary result;
   for (const auto& entry : model->links_) {
-    const urdf::LinkConstSharedPtr& link = entry.second;
-    urdf::GeometrySharedPtr geometry;
-    if (link->collision) geometry = link->collision->geometry;
-    if (!geometry && link->visual) geometry = link->visual->geometry;
+    const urdf::Link& link = *entry.second;
     // Links without a box (a root that only ties the types together) are not bricks.
-    auto box = std::dynamic_pointer_cast<urdf::Box>(geometry);
+    const urdf::BoxSharedPtr box = boxOf(link);
     if (!box) continue;
-    if (!link->inertial) return Status::error("link '" + link->name + "' has no <inertial>");
-    BrickType type = defaults;
-    type.name = link->name;
-    type.size = Eigen::Vector3d(box->dim.x, box->dim.y, box->dim.z);
-    type.mass = link->inertial->mass;
-    type.inertia = Eigen::Vector3d(link->inertial->ixx, link->inertial->iyy, link->inertial->izz);
-    const double off_diagonal = std::abs(link->inertial->ixy) + std::abs(link->inertial->ixz) +
-                                std::abs(link->inertial->iyz);
-    if (off_diagonal > 1e-9 * type.inertia.cwiseAbs().sum())
-      return Status::error("link '" + link->name +
-                           "': inertia must be diagonal in the box frame (a uniform box)");
-    if (const ParameterValue* own = own_materials ? own_materials->find(type.name) : nullptr) {
-      OptionsReader own_reader(*own, "types/" + type.name + "/");
-      if (Status read = readMaterial(own_reader, &type); !read)
-        return prefixed("brick materials yaml: ", read);
-    }
+    BrickType type;
+    if (Status read = brickTypeOfLink(link, *box, defaults, own_materials, &type); !read)
+      return read;
     if (Status added = result.add(type); !added) return added;
   }
   if (result.empty()) return Status::error("the URDF has no link with a box geometry");
 
-  if (own_materials) {
-    for (const auto& [name, material] : own_materials->map())
-      if (!result.find(name))
-        return Status::error("materials name type '" + name + "' that the URDF does not define");
-  }
+  if (Status known = materialsNameKnownTypes(own_materials, result); !known) return known;
   if (!default_type.empty()) {
     if (Status set = result.setDefaultType(default_type); !set) return set;
   }

@@ -15,6 +15,49 @@
 
 namespace brick_stack_sim {
 
+namespace {
+
+// judgeAlone's parts: what the brick touches, and what its verdict says.
+
+/// Every body the brick has a contact with, each once, in handle order.
+std::vector<BodyHandle> touchedBodies(const std::vector<PairContact>& contacts) {
+  std::vector<BodyHandle> touching;
+  for (const PairContact& contact : contacts) touching.push_back(contact.b);
+  std::sort(touching.begin(), touching.end());
+  touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+  return touching;
+}
+
+/// "a, b": the names of `bodies`, as the verdict's reason lists them.
+std::string namesOf(const WorldState& w, const std::vector<BodyHandle>& bodies) {
+  std::string names;
+  for (BodyHandle other : bodies) names += (names.empty() ? "" : ", ") + w.nameOf(other);
+  return names;
+}
+
+/// How firmly statics holds a brick: the least sideways acceleration,
+/// along +-x or +-y, that would move it [m/s^2].
+double leastMovingAcceleration(const std::vector<StaticsBody>& bodies,
+                               const std::vector<StaticsContact>& statics,
+                               const StaticsOptions& options) {
+  double least = std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d directions[] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
+                                        Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)};
+  for (const Eigen::Vector3d& direction : directions)
+    least = std::min(least, horizontalAccelerationMargin(bodies, statics, direction, options));
+  return least;
+}
+
+/// The reason of a verdict that it stands: on what, and how firmly.
+std::string standsReason(BrickState kind, const std::string& names, double acceleration_margin) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g m/s^2", acceleration_margin);
+  return std::string(kind == BrickState::kStable ? "rests on " : "leans on ") + names +
+         " (statics; a sideways acceleration of " + text + " would move it)";
+}
+
+}  // namespace
+
 std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, double friction,
                                         const OrientedBox& box, const Eigen::Vector3d& low,
                                         const Eigen::Vector3d& high) {
@@ -35,13 +78,8 @@ StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact
                           const WorldState& w) {
   StaticsVerdict verdict;
   std::vector<const PairContact*> pointers;
-  for (const PairContact& contact : contacts) {
-    pointers.push_back(&contact);
-    verdict.touching.push_back(contact.b);
-  }
-  std::sort(verdict.touching.begin(), verdict.touching.end());
-  verdict.touching.erase(std::unique(verdict.touching.begin(), verdict.touching.end()),
-                         verdict.touching.end());
+  for (const PairContact& contact : contacts) pointers.push_back(&contact);
+  verdict.touching = touchedBodies(contacts);
   // The COM margin of Brick.msg, on what carries it from below.
   BrickStability support;
   support.supports = supportPatches(
@@ -59,8 +97,7 @@ StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact
   const std::vector<StaticsBody>& bodies = assembly.bodies();
   const std::vector<StaticsContact>& statics = assembly.contacts();
 
-  std::string names;
-  for (BodyHandle other : verdict.touching) names += (names.empty() ? "" : ", ") + w.nameOf(other);
+  const std::string names = namesOf(w, verdict.touching);
   if (verdict.touching.empty()) {
     verdict.reason = "it would touch nothing: it would fall";
     return verdict;
@@ -80,18 +117,8 @@ StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact
   verdict.kind = !support.supports.empty() && support.margin > w.options.stability.min_margin
                      ? BrickState::kStable
                      : BrickState::kLeaning;
-  verdict.acceleration_margin = std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d directions[] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
-                                        Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)};
-  for (const Eigen::Vector3d& direction : directions) {
-    verdict.acceleration_margin =
-        std::min(verdict.acceleration_margin,
-                 horizontalAccelerationMargin(bodies, statics, direction, options));
-  }
-  char text[64];
-  std::snprintf(text, sizeof text, "%.3g m/s^2", verdict.acceleration_margin);
-  verdict.reason = std::string(verdict.kind == BrickState::kStable ? "rests on " : "leans on ") +
-                   names + " (statics; a sideways acceleration of " + text + " would move it)";
+  verdict.acceleration_margin = leastMovingAcceleration(bodies, statics, options);
+  verdict.reason = standsReason(verdict.kind, names, verdict.acceleration_margin);
   return verdict;
 }
 
