@@ -4,8 +4,9 @@
 usage: plot_node_bench.py NODE_RESULTS.csv OUTPUT_DIR
 
 Node CPU and ~get_bricks latency against the number of settled bricks, one
-line per number of moving bricks and subscribers; the targets of issue 12 are
-checked on rows of the same CSV (one run, one machine). NODE_RESULTS_delta.csv,
+line per number of moving bricks and subscribers; the node's targets
+(docs/benchmarks.md, "The node's cost") are checked on rows of the same CSV
+(one run, one machine). NODE_RESULTS_delta.csv,
 when it lies beside it, adds what bricks_delta saves a ~bricks subscriber.
 """
 import csv
@@ -60,7 +61,7 @@ def plot(rows, column, label, path, scale=1.0):
 
 
 def targets(rows, delta_rows):
-    lines = ["| target (issue 12) | measured | met |", "|---|---|---|"]
+    lines = ["| target | measured | met |", "|---|---|---|"]
 
     def add(name, value, ok):
         lines.append(f"| {name} | {value} | {'yes' if ok else 'no'} |")

@@ -20,7 +20,7 @@ lp_runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_lp_bench" "${result
 if command -v taskset >/dev/null; then lp_runner=(taskset -c 0 "${lp_runner[@]}"); fi
 echo "Statics LP per solve into ${results}/statics_lp.csv"
 "${lp_runner[@]}"
-# A held brick over 500 frozen bricks: the real-time factor (issue 9).
+# A held brick over 500 frozen bricks: the real-time factor.
 held_runner=("${workspace}/devel/lib/brick_stack_sim/stack_sim_held_bench" "${results}/held_bench.csv")
 if command -v taskset >/dev/null; then held_runner=(taskset -c 0 "${held_runner[@]}"); fi
 echo "Held brick over 500 frozen bricks into ${results}/held_bench.csv"
@@ -29,5 +29,5 @@ echo "Held brick over 500 frozen bricks into ${results}/held_bench.csv"
 { echo "machine: $(nproc --all) cores (the benchmark pinned to one), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)";
   echo "date: $(date -u +%Y-%m-%d)"; } > "${results}/bench_${plan}_machine.txt"
 # The node as a ROS client sees it: CPU, publish rates, service latency for
-# settled scenes of 100 to 10 000 bricks (issue 12).
+# settled scenes of 100 to 10 000 bricks.
 bash "${repo_root}/scripts/run_node_bench.sh" "${plan}"

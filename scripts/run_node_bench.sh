@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The node benchmark (issue 12): starts brick_sim through sim.launch on a
+# The node benchmark (docs/benchmarks.md, "The node's cost"): starts brick_sim through sim.launch on a
 # master of its own, pinned to one core, and measures it from a C++ client on
 # the other (stack_sim_node_bench): node CPU, publish rates and sizes, and
 # service latency for settled scenes of 100 to 10 000 bricks. Then the plots

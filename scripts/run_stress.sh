@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The long stress runs (make test runs short versions of each):
-# - batch runs of issue 4: each must end with nonfinite = 0, no brick lost or
+# - batch runs of stack_sim_run: each must end with nonfinite = 0, no brick lost or
 #   missing, no crash, and the short ones must give bit-identical reports
 #   when run twice;
 # - the node's service fuzzer with three seeds of 10 000 requests, an hour of
 #   sim time of placing and removing (memory measured), and the concurrent
-#   clients with more rounds (issue 11): each must pass its gtests.
+#   clients with more rounds: each must pass its gtests.
 set -eo pipefail
 source "$(dirname "$0")/env.sh"
 bash "${repo_root}/scripts/build.sh" tests

@@ -1,6 +1,7 @@
 // blueprint_builder: builds a scene on a running brick_sim through its
 // services and prints "demo summary: ..."; exits 1 when the structure did not
-// do what the scene expects, naming the brick that fell (README).
+// do what the scene expects, naming the brick that fell (docs/ros_interface.md,
+// "blueprint_builder").
 #include <csignal>
 #include <cstdio>
 #include <fstream>

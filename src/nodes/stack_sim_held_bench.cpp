@@ -1,6 +1,7 @@
 // stack_sim_held_bench: what a held brick costs over a large frozen scene
-// (issue 9). 25 frozen ten-layer towers (500 bricks) on the table, and a
-// held brick swept back and forth 2 cm over their tops at the held speed
+// (docs/benchmarks.md, "A held brick over a frozen scene"). 25 frozen
+// ten-layer towers (500 bricks) on the table, and a held brick swept back
+// and forth 2 cm over their tops at the held speed
 // limit, and one skimming their tops (touching them: every step checks what
 // it presses on); the real-time factor (sim time over wall time) of those,
 // of the same scene with nothing moving, and of the held brick alone on an

@@ -1,6 +1,6 @@
 #pragma once
 // What the core and the ROS tests share: KAPLA's measured size and mass
-// (DESIGN.md section 5), the package's brick types, worlds in a given mode,
+// (docs/ros_interface.md, "Parameters"), the package's brick types, worlds in a given mode,
 // towers laid out by hand (independently of the core's generator, which the
 // scene tests check against them), and a fingerprint of a world's state to
 // prove that a refused request changed nothing.

@@ -9,9 +9,10 @@
 namespace brick_stack_sim {
 namespace ros_adapter {
 
-/// Everything the node needs to start: its private parameters (DESIGN.md
-/// section 3; config/sim.yaml and config/stability.yaml, the same tree that
-/// stack_sim_run --config reads) and how it paces the world.
+/// Everything the node needs to start: its private parameters
+/// (docs/ros_interface.md, "Parameters"; config/sim.yaml and
+/// config/stability.yaml, the same tree that stack_sim_run --config reads)
+/// and how it paces the world.
 struct NodeOptions {
   SimulationConfig config;
 

@@ -11,7 +11,7 @@
 namespace brick_stack_sim {
 namespace teleop {
 
-/// Height of the table top in the world frame [m] (DESIGN.md section 3).
+/// Height of the table top in the world frame [m] (docs/ros_interface.md, "Frames and units").
 constexpr double kTableTop = 0.0;
 
 /// Least area [m^2] that two footprints must share for one brick to be under

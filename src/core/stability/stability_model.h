@@ -1,5 +1,5 @@
 #pragma once
-// The interface between the world and a stability model (DESIGN.md section 2).
+// The interface between the world and a stability model (docs/design.md, "Stability models").
 
 #include <functional>
 #include <string>

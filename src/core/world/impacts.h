@@ -1,6 +1,7 @@
 #pragma once
-// Impacts on frozen bricks, seen before Bullet's step (DESIGN.md section 1:
-// "an impact carries more energy than the stack above can absorb"). Bullet
+// Impacts on frozen bricks, seen before Bullet's step (docs/design.md,
+// "Impacts and held bricks": an impact may carry more energy than the stack
+// above can absorb). Bullet
 // sees a frozen brick as a static collider and would bounce any striker off
 // it; the model judges each blow first, and the world carries out what it
 // decides: the struck brick is woken and kicked, slid in place under its

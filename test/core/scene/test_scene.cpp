@@ -203,7 +203,8 @@ TEST(Scene, PackageScenesAllLoad) {
     EXPECT_EQ(scene.bricks.empty(), file.path().stem() == "empty") << file.path();
     EXPECT_EQ(scene.name, file.path().stem().string()) << "a scene is named after its file";
   }
-  // The six demos of issue 10 and the benchmark's scenes.
+  // The six demos (README.md, "Demos: the thesis's experiments") and the
+  // benchmark's scenes.
   EXPECT_GE(scenes, 20);
 }
 

@@ -1,5 +1,5 @@
 // The stack stability layer (mode com) against statics with exact answers
-// (DESIGN.md section 5). Expected values come from hand statics in each test,
+// (docs/testing.md, "Ground truth"). Expected values come from hand statics in each test,
 // never from the model's own output.
 #include <algorithm>
 #include <cmath>

@@ -292,7 +292,7 @@ TEST_P(StaticsInMode, CardHousesFromTheGeneratorStandStill) {
 }
 
 TEST(PlainBullet, TwoLevelCardHouseIsReportedNotJudged) {
-  // Plain Bullet cannot hold a V (BULLET_NOTES.md); what it does is
+  // Plain Bullet cannot hold a V (docs/design.md, "The stability layer"); what it does is
   // reported for the record, not asserted.
   auto world = worldWithFriction("none", 0.5);
   for (const BrickPlacement& placement : twoLevelCardHouse())

@@ -1,4 +1,4 @@
-// The statics LP against cases with exact answers (DESIGN.md section 5),
+// The statics LP against cases with exact answers (docs/testing.md, "Ground truth"),
 // each derived by hand in support/leaning.h or below. Contacts come from
 // the boxes' geometry (touchingContacts), as for a brick placed at rest.
 
@@ -151,7 +151,7 @@ TEST_P(Ladder, PlankAgainstAHeavyBlockStandsByItsOwnFormula) {
 
 INSTANTIATE_TEST_SUITE_P(WithAndWithoutWallFriction, Ladder, ::testing::Values(0.0, 0.3));
 
-/// A harmonic stack (DESIGN.md section 5): brick i from the top sits f L / (2 i)
+/// A harmonic stack (docs/testing.md, "Ground truth"): brick i from the top sits f L / (2 i)
 /// beyond the one below it, the bottom one on the table's edge... here on a
 /// fixed base brick. It stands for f < 1 and falls for f > 1.
 bool harmonicStackStands(int n, double f) {

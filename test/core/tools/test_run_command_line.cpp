@@ -208,7 +208,7 @@ TEST(StackSimRun, RefusesAFileThatIsNotASceneAtOnce) {
 }
 
 TEST(StackSimRun, ASceneWithABadBrickIsRefusedUnlessAskedToSkipIt) {
-  // Issue 11: such a scene loaded, ran and exited 0 with "refused 1".
+  // Such a scene once loaded, ran and exited 0 with "refused 1".
   const std::string outside = writeYaml("run_outside.yaml",
                                         "bricks:\n"
                                         "  - {id: a, position: [0, 0, 0.0039]}\n"
@@ -269,7 +269,7 @@ TEST(StackSimRun, WritesTheReportAndFailsClearlyOnBadInput) {
   EXPECT_NE(text.str().find("\"scene\": \"single_drop\""), std::string::npos);
   EXPECT_NE(output.find("largest displacement"), std::string::npos) << output;
 
-  // The node's own yaml, as DESIGN.md's runner promises.
+  // The node's own yaml, as docs/design.md, "Options" promises.
   ASSERT_EQ(runExecutable("--config " + test::dataPath("config/stability.yaml") +
                               " --scene single_drop --duration 0.2 --report " + report_path,
                           &output),

@@ -149,12 +149,12 @@ struct Expected {
   std::uint64_t hash;
 };
 
-// The hashes of the code as it stood when this test was written (issue 7).
+// The hashes of the code as it stood when this test was written.
 const Expected kExpected[] = {
     {"built_tower", "none", 0x4678dd54763cd250ULL},
     {"built_tower", "com", 0x7a00383680c6e0c3ULL},
     {"pile", "none", 0xf8b0a963969f3642ULL},
-    // Issue 8: com freezes bricks that lean on others in the pile when
+    // com freezes bricks that lean on others in the pile when
     // statics balances them, as equilibrium does, so the pile now ends as there.
     // Loads that movers put on frozen bricks enter their statics, and a
     // failing stack wakes as its whole collapse mechanism (the slant tower
@@ -166,7 +166,7 @@ const Expected kExpected[] = {
     {"slant_tower", "com", 0x1659017e67073066ULL},
     {"remove_and_push", "none", 0xf6bc43f641e5d6e3ULL},
     {"remove_and_push", "com", 0xde19cc99c00434ddULL},
-    // Mode equilibrium (issue 8): a flat stack that the COM rule finds
+    // Mode equilibrium: a flat stack that the COM rule finds
     // stable is an equilibrium, so the built tower and the removal scene
     // end as in com.
     {"built_tower", "equilibrium", 0x7a00383680c6e0c3ULL},

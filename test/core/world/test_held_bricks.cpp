@@ -1,5 +1,6 @@
-// Held bricks (issue 9): a brick taken into a hand is kinematic, follows its
-// target no faster than the held speed limits, and pushes the stack through
+// Held bricks (docs/design.md, "Impacts and held bricks"): a brick taken
+// into a hand is kinematic, follows its target no faster than the held
+// speed limits, and pushes the stack through
 // the impact model; let go, it falls, settles and may join the stack. Bad
 // requests are refused and change nothing.
 #include <algorithm>
@@ -12,8 +13,8 @@
 
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
-
 #include "support/modes.h"
+
 namespace brick_stack_sim {
 namespace {
 

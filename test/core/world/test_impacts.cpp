@@ -1,5 +1,6 @@
-// Impacts on a settled tower (issue 9, thesis 4.2): a brick thrown at a
-// frozen 13-layer KAPLA tower. The stability layer judges the blow before
+// Impacts on a settled tower (docs/design.md, "Impacts and held bricks";
+// thesis 4.2): a brick thrown at a frozen 13-layer KAPLA tower. The
+// stability layer judges the blow before
 // Bullet's step, from the impulse against what holds the struck brick: a hit
 // at the top moves the top layer and nothing two layers below; a hard hit low
 // in the tower slides the struck brick in place under its load, and the tower

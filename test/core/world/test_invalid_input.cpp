@@ -90,7 +90,7 @@ TEST_P(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
   expectRefused(world_->addBrick(placement("new", {0, 0.1, 0.0039}, 0.0, "granite")),
                 "unknown brick type 'granite'");
   expectRefused(world_->addBrick(placement("base", {0, 0.1, 0.0039})), "already in use");
-  // The fixed bodies' names, in any case (issue 11: `supported_by: [floor]`
+  // The fixed bodies' names, in any case (`supported_by: [floor]`
   // must not be ambiguous).
   for (const char* reserved : {"table", "floor", "world", "Table", "FLOOR", "WoRlD"})
     expectRefused(world_->addBrick(placement(reserved, {0, 0.1, 0.0039})), "is reserved");
@@ -125,8 +125,8 @@ TEST_P(InvalidInput, PoseInsideAnotherBrickOrUnderTheTable) {
 }
 
 TEST_P(InvalidInput, FiniteButAbsurdPositionsLieOutsideTheWorldBox) {
-  // Issue 11: x = 1e300 missed the floor and fell for ever; z = 1e300 hung
-  // in the air. Both, and anything past the default 10 m box, are refused.
+  // Before the world box, x = 1e300 missed the floor and fell for ever;
+  // z = 1e300 hung in the air. Both, and anything past the default 10 m box, are refused.
   for (const Eigen::Vector3d& far :
        {Eigen::Vector3d(1e300, 0, 0.0039), Eigen::Vector3d(0, -1e300, 0.0039),
         Eigen::Vector3d(0, 0, 1e300), Eigen::Vector3d(10.01, 0, 0.0039),

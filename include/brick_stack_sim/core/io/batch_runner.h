@@ -68,7 +68,7 @@ Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
 Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
                 RunReport* report);
 
-/// The report as JSON with the keys of DESIGN.md section 4 (and a few more).
+/// The report as JSON with the keys of docs/design.md, "The batch runner" (and a few more).
 std::string toJson(const RunReport& report);
 
 }  // namespace brick_stack_sim

@@ -1,6 +1,7 @@
 #pragma once
-// The scene generators (DESIGN.md section 4): parametric structures whose
-// statics are known, so scenes, benchmarks and tests can build them exactly.
+// The scene generators (docs/design.md, "Simulation and scenes"): parametric
+// structures whose statics are known, so scenes, benchmarks and tests can
+// build them exactly.
 
 #include <string>
 #include <vector>
@@ -27,7 +28,7 @@ struct TowerParams {
   double spacing = 0.13;                             ///< Distance between copies [m].
 };
 
-/// Parameters of the `harmonic` generator (DESIGN.md section 5): n bricks
+/// Parameters of the `harmonic` generator (docs/testing.md, "Ground truth"): n bricks
 /// stacked over the table's +x edge, brick i from the top overhanging the one
 /// below (the table edge for the lowest) by factor * L / (2 i). Statics: it
 /// stands for factor < 1 and falls for factor > 1.

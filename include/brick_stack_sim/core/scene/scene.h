@@ -25,9 +25,9 @@ enum class ExpectedOutcome {
   kCollapses,  ///< Some brick falls: a demonstration of a stability limit.
 };
 
-/// A scene (DESIGN.md section 4): an optional table override, optional extra
-/// brick types, and bricks with placement times, sorted by `at` (stable).
-/// `generator` may be one generator or a list of them.
+/// A scene (docs/design.md, "Simulation and scenes"): an optional table
+/// override, optional extra brick types, and bricks with placement times,
+/// sorted by `at` (stable). `generator` may be one generator or a list of them.
 struct Scene {
   std::string name;
   std::optional<TableOptions> table;
