@@ -10,7 +10,6 @@ using scene_yaml::readInt;
 using scene_yaml::readNumber;
 using scene_yaml::readString;
 using scene_yaml::readVector;
-using scene_yaml::requireKnownKeys;
 
 namespace {
 
@@ -127,7 +126,7 @@ Status generateCardHouse(const CardHouseParams& params, const BrickTypeLibrary& 
 
 void readAFrameGenerator(const YAML::Node& node, const std::string& where,
                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "angle", "type", "start", "origin"});
+  requireGeneratorKeys(node, where, {"angle", "origin"}, Placing::kAtOnce);
   AFrameParams params;
   params.angle = readNumber(node, "angle", where, params.angle);
   params.type = readString(node, "type", where);
@@ -138,7 +137,7 @@ void readAFrameGenerator(const YAML::Node& node, const std::string& where,
 
 void readCardHouseGenerator(const YAML::Node& node, const std::string& where,
                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "levels", "angle", "type", "start", "interval", "origin"});
+  requireGeneratorKeys(node, where, {"levels", "angle", "origin"}, Placing::kOneByOne);
   CardHouseParams params;
   params.levels = readInt(node, "levels", where, params.levels);
   params.angle = readNumber(node, "angle", where, params.angle);

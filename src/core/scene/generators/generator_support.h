@@ -2,15 +2,16 @@
 // What the scene generators share: their YAML entry point, the checks every
 // generator makes, and the brick type they place.
 
+#include <set>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/types/world_options.h"
 #include "scene/yaml_fields.h"
 
@@ -61,6 +62,20 @@ ScheduledBrick& appendBrick(const BrickType& type, const Eigen::Vector3d& positi
 
 /// ROS convention (REP 103): fixed-axis roll about x, then pitch about y, then yaw about z.
 Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy);
+
+/// Whether a generator places its bricks one by one, `interval` apart, or all
+/// at its `start`.
+enum class Placing { kOneByOne, kAtOnce };
+
+/// Refuses a key of generator `node` that is neither its own nor one that
+/// every generator takes (its name, the brick type, start and, placing one
+/// by one, interval), so that the common keys are listed once.
+inline void requireGeneratorKeys(const YAML::Node& node, const std::string& where,
+                                 std::set<std::string> own, Placing placing) {
+  own.insert({"name", "type", "start"});
+  if (placing == Placing::kOneByOne) own.insert("interval");
+  scene_yaml::requireKnownKeys(node, where, own);
+}
 
 /// The fields every generator that places bricks one by one shares.
 template <typename Params>

@@ -6,7 +6,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::requireKnownKeys;
 
 Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
                         const BrickTypeLibrary& types, std::vector<ScheduledBrick>* bricks) {
@@ -35,7 +34,7 @@ Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
 
 void readHarmonicGenerator(const YAML::Node& node, const std::string& where,
                            const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "bricks", "factor", "type", "start", "interval"});
+  requireGeneratorKeys(node, where, {"bricks", "factor"}, Placing::kOneByOne);
   HarmonicParams params;
   params.bricks = readInt(node, "bricks", where, params.bricks);
   params.factor = readNumber(node, "factor", where, params.factor);

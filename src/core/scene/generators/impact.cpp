@@ -7,7 +7,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::requireKnownKeys;
 
 Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
                       std::vector<ScheduledBrick>* bricks) {
@@ -51,9 +50,9 @@ Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
 
 void readImpactGenerator(const YAML::Node& node, const std::string& where,
                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where,
-                   {"name", "layers", "bricks_per_layer", "type", "start", "interval", "layer",
-                    "speed", "delay", "gap"});
+  requireGeneratorKeys(node, where,
+                       {"layers", "bricks_per_layer", "layer", "speed", "delay", "gap"},
+                       Placing::kOneByOne);
   ImpactParams params;
   params.tower.layers = readInt(node, "layers", where, 13);
   params.tower.bricks_per_layer = readInt(node, "bricks_per_layer", where, 2);

@@ -4,7 +4,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readVector;
-using scene_yaml::requireKnownKeys;
 
 Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibrary& types,
                            std::vector<ScheduledBrick>* bricks) {
@@ -27,7 +26,7 @@ Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibra
 void readKaplaRecordGenerator(const YAML::Node& node, const std::string& where,
                               const GeneratorContext& context,
                               std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "floors", "type", "start", "interval", "origin"});
+  requireGeneratorKeys(node, where, {"floors", "origin"}, Placing::kOneByOne);
   KaplaRecordParams params;
   params.floors = readInt(node, "floors", where, params.floors);
   params.origin = readVector<2>(node, "origin", where, params.origin);

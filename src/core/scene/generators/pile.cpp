@@ -8,7 +8,6 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 using scene_yaml::readVector;
-using scene_yaml::requireKnownKeys;
 
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
                     std::vector<ScheduledBrick>* bricks) {
@@ -62,9 +61,10 @@ Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
 
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where,
-                   {"name", "bricks", "columns", "rows", "cell", "layer_height", "base_height",
-                    "max_tilt", "seed", "type", "start", "origin"});
+  requireGeneratorKeys(node, where,
+                       {"bricks", "columns", "rows", "cell", "layer_height", "base_height",
+                        "max_tilt", "seed", "origin"},
+                       Placing::kAtOnce);
   PileParams params;
   params.origin = readVector<2>(node, "origin", where, params.origin);
   params.bricks = readInt(node, "bricks", where, params.bricks);

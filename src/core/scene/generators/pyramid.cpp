@@ -6,7 +6,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::requireKnownKeys;
 
 Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
                        std::vector<ScheduledBrick>* bricks) {
@@ -35,7 +34,7 @@ Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& type
 
 void readPyramidGenerator(const YAML::Node& node, const std::string& where,
                           const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "base", "gap", "type", "start", "interval"});
+  requireGeneratorKeys(node, where, {"base", "gap"}, Placing::kOneByOne);
   PyramidParams params;
   params.base = readInt(node, "base", where, params.base);
   params.gap = readNumber(node, "gap", where, params.gap);

@@ -6,7 +6,6 @@ namespace brick_stack_sim {
 
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
-using scene_yaml::requireKnownKeys;
 
 Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
                           std::vector<ScheduledBrick>* bricks) {
@@ -28,7 +27,7 @@ Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary
 
 void readSlantTowerGenerator(const YAML::Node& node, const std::string& where,
                              const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where, {"name", "layers", "offset", "type", "start", "interval"});
+  requireGeneratorKeys(node, where, {"layers", "offset"}, Placing::kOneByOne);
   SlantTowerParams params;
   params.layers = readInt(node, "layers", where, params.layers);
   params.offset = readNumber(node, "offset", where, params.offset);

@@ -7,7 +7,6 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 using scene_yaml::readVector;
-using scene_yaml::requireKnownKeys;
 
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
                      std::vector<ScheduledBrick>* bricks) {
@@ -67,9 +66,9 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
 
 void readTowerGenerator(const YAML::Node& node, const std::string& where,
                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
-  requireKnownKeys(node, where,
-                   {"name", "layers", "bricks_per_layer", "type", "start", "interval", "gap",
-                    "origin", "grid", "spacing"});
+  requireGeneratorKeys(node, where,
+                       {"layers", "bricks_per_layer", "gap", "origin", "grid", "spacing"},
+                       Placing::kOneByOne);
   TowerParams params;
   params.origin = readVector<2>(node, "origin", where, params.origin);
   const Eigen::Vector2d grid =
