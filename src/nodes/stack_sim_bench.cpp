@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/tools/benchmark.h"
 #include "brick_stack_sim/tools/package_data.h"
 
@@ -18,10 +19,10 @@ int main(int argc, char** argv) {
   }
   const std::string only = argc == 4 ? "," + std::string(argv[3]) + "," : "";
   BenchContext context;
-  const std::string data = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
-  context.scene_dirs = {data + "/scenes"};
-  if (Status loaded = BrickTypeLibrary::load(data + "/urdf/bricks.urdf",
-                                             data + "/config/bricks.yaml", &context.types);
+  DataOptions data;
+  fillPackageData(packageDataDir(BRICK_STACK_SIM_DATA_DIR), &data);
+  context.scene_dirs = data.scene_dirs;
+  if (Status loaded = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &context.types);
       !loaded) {
     std::cerr << "stack_sim_bench: " << loaded.message << "\n";
     return 1;

@@ -14,8 +14,9 @@
 #include <memory>
 #include <string>
 
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/generators.h"
+#include "brick_stack_sim/core/simulation/simulation_config.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "brick_stack_sim/tools/package_data.h"
 
@@ -96,10 +97,10 @@ int main(int argc, char** argv) {
     std::cerr << "usage: stack_sim_held_bench OUT.csv\n";
     return 2;
   }
-  const std::string data = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
+  DataOptions data;
+  fillPackageData(packageDataDir(BRICK_STACK_SIM_DATA_DIR), &data);
   BrickTypeLibrary types;
-  if (Status loaded =
-          BrickTypeLibrary::load(data + "/urdf/bricks.urdf", data + "/config/bricks.yaml", &types);
+  if (Status loaded = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
       !loaded) {
     std::cerr << loaded.message << "\n";
     return 1;

@@ -5,6 +5,7 @@
 
 #include <ros/time.h>
 
+#include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/conversions.h"
 
@@ -65,11 +66,14 @@ Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& 
   if (read.scene.empty()) return Status::error("parameter ~scene is empty: name a scene or a path");
   private_nh.param("sim", read.sim, read.sim);
   if (read.sim.empty()) return Status::error("parameter ~sim is empty: the simulator's namespace");
-  private_nh.param("types_urdf", read.types_urdf, package_dir + "/urdf/bricks.urdf");
-  private_nh.param("materials_yaml", read.materials_yaml, package_dir + "/config/bricks.yaml");
-  std::vector<std::string> dirs;
-  private_nh.param("scene_dirs", dirs, std::vector<std::string>{package_dir + "/scenes"});
-  read.scene_dirs = dirs;
+  DataOptions data;  // unset or empty: the package's own
+  private_nh.param("types_urdf", data.types_urdf, data.types_urdf);
+  private_nh.param("materials_yaml", data.materials_yaml, data.materials_yaml);
+  private_nh.param("scene_dirs", data.scene_dirs, data.scene_dirs);
+  fillPackageData(package_dir, &data);
+  read.types_urdf = data.types_urdf;
+  read.materials_yaml = data.materials_yaml;
+  read.scene_dirs = data.scene_dirs;
   for (const auto& [name, value] :
        {std::pair<const char*, double*>{"settle_timeout", &read.settle_timeout},
         {"final_wait", &read.final_wait},

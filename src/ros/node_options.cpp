@@ -16,11 +16,7 @@ Status loadNodeOptions(const ParameterValue& parameters, NodeOptions* options) {
 
 Status resolveDataPaths(const std::string& package_dir, NodeOptions* options) {
   DataOptions& data = options->config.data;
-  if (!package_dir.empty()) {
-    if (data.types_urdf.empty()) data.types_urdf = package_dir + "/urdf/bricks.urdf";
-    if (data.materials_yaml.empty()) data.materials_yaml = package_dir + "/config/bricks.yaml";
-    if (data.scene_dirs.empty()) data.scene_dirs.push_back(package_dir + "/scenes");
-  }
+  if (!package_dir.empty()) fillPackageData(package_dir, &data);
   if (data.types_urdf.empty())
     return Status::error(
         "parameter ~types_urdf is not set and the package brick_stack_sim was not found to "

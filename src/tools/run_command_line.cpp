@@ -168,9 +168,7 @@ Status parseRunCommandLine(const std::vector<std::string>& args, const std::stri
   DataOptions& data = result.config.data;
   if (data.scene.empty())
     return Status::error("--scene is required (or a config with `scene`; see --help)");
-  if (data.types_urdf.empty()) data.types_urdf = data_dir + "/urdf/bricks.urdf";
-  if (data.materials_yaml.empty()) data.materials_yaml = data_dir + "/config/bricks.yaml";
-  if (data.scene_dirs.empty()) data.scene_dirs.push_back(data_dir + "/scenes");
+  fillPackageData(data_dir, &data);
   if (Status valid = validate(result.config.world); !valid) {
     valid.message = "bad setting: " + valid.message;
     return valid;

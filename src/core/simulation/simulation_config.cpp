@@ -41,6 +41,12 @@ Status validate(const DataOptions& d) {
   return Status::success();
 }
 
+void fillPackageData(const std::string& package_dir, DataOptions* data) {
+  if (data->types_urdf.empty()) data->types_urdf = package_dir + "/urdf/bricks.urdf";
+  if (data->materials_yaml.empty()) data->materials_yaml = package_dir + "/config/bricks.yaml";
+  if (data->scene_dirs.empty()) data->scene_dirs.push_back(package_dir + "/scenes");
+}
+
 Status validate(const PublishOptions& p) {
   // Above 10 kHz of sim time a subscriber learns nothing more and the node
   // spends its time serialising.

@@ -25,6 +25,12 @@ struct DataOptions {
 /// Checks every field; the message names the first bad one by its key.
 Status validate(const DataOptions& options);
 
+/// Fills the paths `data` leaves empty with the package's own data under
+/// `package_dir` (the source tree or share/brick_stack_sim): the brick types
+/// of urdf/bricks.urdf with the materials of config/bricks.yaml, and the
+/// scenes of scenes/. The one place every program finds its defaults.
+void fillPackageData(const std::string& package_dir, DataOptions* data);
+
 /// How the ROS node publishes and paces the world. The batch runner reads
 /// them too, and uses none, so that one yaml file serves both programs.
 struct PublishOptions {
