@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include "brick_stack_sim/core/allocation_guard.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/tools/package_data.h"
 #include "brick_stack_sim/tools/run_command_line.h"
@@ -55,9 +56,8 @@ Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTyp
   return Status::success();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+/// The whole run; main() turns an allocation failure into exit 1.
+int run(int argc, char** argv) {
   RunCommandLine cli;
   const std::vector<std::string> args(argv + 1, argv + argc);
   const std::string data_dir = packageDataDir(BRICK_STACK_SIM_DATA_DIR);
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   // A report that cannot be written is found out before a long run, not after.
   Status status = checkWritable(cli.report_path);
   if (status) status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
-  if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, data.scene_max_bytes);
+  if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, sceneLimits(data));
   std::vector<RefusedPlacement> skipped;
   if (status) status = setAsideBadBricks(cli, &scene, types, options.world, &skipped);
   if (status) status = runScene(scene, types, options, &report);
@@ -98,11 +98,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr,
-               "%s: mode %s, %.3f s simulated in %.3f s wall (real-time factor %.1f), %zu bricks, "
+               "%s: mode %s, %.3f s simulated in %.3f s wall (real-time factor %.1f), %zu brick%s, "
                "largest displacement %.3f mm, nonfinite %llu, refused %zu\n",
                report.scene.c_str(), report.world.stability.mode.c_str(), report.sim_time,
                report.wall_time, report.sim_time / std::max(report.wall_time, 1e-9),
-               report.bricks.size(), report.maxDisplacement() * 1000.0,
+               report.bricks.size(), report.bricks.size() == 1 ? "" : "s",
+               report.maxDisplacement() * 1000.0,
                static_cast<unsigned long long>(report.cost.nonfinite), report.refused.size());
   // Refused during the run (an overlap with a brick placed earlier): the
   // scene did not run as written.
@@ -115,4 +116,19 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // A scene too large for the memory there is fails the run with a message
+  // (docs/ros_interface.md, "stack_sim_run"), never with an abort.
+  int code = 1;
+  const Status guarded = refuseOnAllocationFailure("running the scene", [&] {
+    code = run(argc, argv);
+    return Status::success();
+  });
+  if (guarded) return code;
+  std::cerr << "stack_sim_run: " << guarded.message << "\n";
+  return 1;
 }

@@ -1,4 +1,5 @@
-// How the node's messages and logs write a sim time: "t=1.250 s".
+// How the node's messages and logs write a sim time ("t=1.250 s") and a
+// count ("1 brick", "2 bricks").
 #pragma once
 
 #include <sstream>
@@ -12,6 +13,11 @@ inline std::string formatTime(double t) {
   text.precision(3);
   text << std::fixed << "t=" << t << " s";
   return text.str();
+}
+
+/// `n` and `noun`, plural unless `n` is one: "1 brick", "0 bricks".
+inline std::string counted(std::size_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
 }  // namespace ros_adapter

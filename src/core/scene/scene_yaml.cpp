@@ -18,6 +18,7 @@
 
 #include "scene/generators/generator_support.h"
 #include "scene/yaml_fields.h"
+#include "util/text_format.h"
 
 namespace brick_stack_sim {
 
@@ -99,33 +100,68 @@ ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
 struct GeneratorEntry {
   const char* name;
   GeneratorReader read;
+  GeneratorCounter count;
 };
 
 /// Every generator a scene may name, one file each under generators/.
 constexpr GeneratorEntry kGenerators[] = {
-    {"tower", &readTowerGenerator},
-    {"harmonic", &readHarmonicGenerator},
-    {"slant_tower", &readSlantTowerGenerator},
-    {"pyramid", &readPyramidGenerator},
-    {"pile", &readPileGenerator},
-    {"aframe", &readAFrameGenerator},
-    {"card_house", &readCardHouseGenerator},
-    {"impact", &readImpactGenerator},
-    {"kapla_record", &readKaplaRecordGenerator},
+    {"tower", &readTowerGenerator, &countTowerGenerator},
+    {"harmonic", &readHarmonicGenerator, &countHarmonicGenerator},
+    {"slant_tower", &readSlantTowerGenerator, &countSlantTowerGenerator},
+    {"pyramid", &readPyramidGenerator, &countPyramidGenerator},
+    {"pile", &readPileGenerator, &countPileGenerator},
+    {"aframe", &readAFrameGenerator, &countAFrameGenerator},
+    {"card_house", &readCardHouseGenerator, &countCardHouseGenerator},
+    {"impact", &readImpactGenerator, &countImpactGenerator},
+    {"kapla_record", &readKaplaRecordGenerator, &countKaplaRecordGenerator},
 };
 
-void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
-                  std::vector<ScheduledBrick>* bricks) {
-  const std::string where = "generator";
+/// The generator `node` names; fails on a node without a known name.
+const GeneratorEntry& findGenerator(const YAML::Node& node, const std::string& where) {
   if (!node.IsMap() || !node["name"]) fail(where, "needs a 'name'");
   const std::string name = readString(node, "name", where);
   std::string available;
   for (const GeneratorEntry& generator : kGenerators) {
-    if (name == generator.name)
-      return generator.read(node, where, GeneratorContext{table, types}, bricks);
+    if (name == generator.name) return generator;
     available += (available.empty() ? "" : ", ") + std::string(generator.name);
   }
-  fail(where, "unknown generator '" + name + "' (available: " + available + ")");
+  fail(where, "unknown generator " + quotedId(name) + " (available: " + available + ")");
+}
+
+void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
+                  std::vector<ScheduledBrick>* bricks) {
+  const std::string where = "generator";
+  findGenerator(node, where).read(node, where, GeneratorContext{table, types}, bricks);
+}
+
+/// The generators of a scene: one, or a list of them.
+std::vector<YAML::Node> generatorNodes(const YAML::Node& root) {
+  const YAML::Node generators = root["generator"];
+  if (!generators) return {};
+  if (!generators.IsSequence()) return {generators};
+  return std::vector<YAML::Node>(generators.begin(), generators.end());
+}
+
+/// Counts what every generator and the `bricks` list would place, before
+/// anything is built, and fails at the first that passes `max_bricks`
+/// (docs/ros_interface.md, "Refusals and limits").
+void checkBrickCount(const YAML::Node& root, int max_bricks) {
+  const std::string limit =
+      " bricks: at most " + std::to_string(max_bricks) + " (scene_max_bricks)";
+  const std::vector<YAML::Node> generators = generatorNodes(root);
+  std::int64_t total = 0;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const GeneratorEntry& generator = findGenerator(generators[i], "generator");
+    total += generator.count(generators[i], "generator");
+    if (total > max_bricks)
+      throw SceneError{"generator " + std::to_string(i + 1) + " (" + generator.name +
+                       ") would bring the scene to " + std::to_string(total) + limit};
+  }
+  const YAML::Node listed = root["bricks"];
+  if (listed && listed.IsSequence() &&
+      total + static_cast<std::int64_t>(listed.size()) > max_bricks)
+    fail("bricks", "the list of " + std::to_string(listed.size()) + " would bring the scene to " +
+                       std::to_string(total + listed.size()) + limit);
 }
 
 /// Whether anything (a file, a FIFO, a directory...) is at `path`: what is
@@ -141,20 +177,22 @@ bool exists(const std::string& path) {
 Status readSceneFile(const std::string& path, int max_bytes, std::string* text) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0)
-    return Status::error("scene file " + path + " cannot be opened: " + std::strerror(errno));
+    return Status::error("scene file " + shortText(path) +
+                         " cannot be opened: " + std::strerror(errno));
   struct stat info;
   Status status;
   if (::fstat(fd, &info) != 0) {
-    status = Status::error("scene file " + path + " cannot be examined: " + std::strerror(errno));
+    status = Status::error("scene file " + shortText(path) +
+                           " cannot be examined: " + std::strerror(errno));
   } else if (S_ISDIR(info.st_mode)) {
-    status = Status::error("scene " + path + " is a directory, not a scene file");
+    status = Status::error("scene " + shortText(path) + " is a directory, not a scene file");
   } else if (!S_ISREG(info.st_mode)) {
-    status = Status::error("scene " + path +
+    status = Status::error("scene " + shortText(path) +
                            " is not a regular file (a FIFO, socket or device): refused unread");
   } else if (info.st_size > max_bytes) {
-    status = Status::error("scene file " + path + " has " + std::to_string(info.st_size) +
-                           " bytes, more than the limit of " + std::to_string(max_bytes) +
-                           " (parameter scene_max_bytes)");
+    status = Status::error("scene file " + shortText(path) + " has " +
+                           std::to_string(info.st_size) + " bytes, more than the limit of " +
+                           std::to_string(max_bytes) + " (parameter scene_max_bytes)");
   } else {
     std::string read(static_cast<std::size_t>(info.st_size), '\0');
     std::size_t filled = 0;
@@ -163,7 +201,8 @@ Status readSceneFile(const std::string& path, int max_bytes, std::string* text) 
       const ssize_t got = ::read(fd, &read[filled], read.size() - filled);
       if (got < 0 && errno == EINTR) continue;
       if (got < 0) {
-        status = Status::error("scene file " + path + " cannot be read: " + std::strerror(errno));
+        status = Status::error("scene file " + shortText(path) +
+                               " cannot be read: " + std::strerror(errno));
         break;
       }
       if (got == 0) break;
@@ -193,11 +232,12 @@ Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types) {
 }
 
 Status parseScene(const std::string& yaml_text, const std::string& name,
-                  const BrickTypeLibrary& types, Scene* scene) {
+                  const BrickTypeLibrary& types, Scene* scene, const SceneLimits& limits) {
   Scene result;
   try {
     const YAML::Node root = YAML::Load(yaml_text);
-    if (!root.IsMap()) return Status::error("scene '" + name + "': expected a map at the top");
+    if (!root.IsMap())
+      return Status::error("scene " + quotedPath(name) + ": expected a map at the top");
     requireKnownKeys(root, "scene", {"name", "table", "types", "generator", "bricks", "expect"});
     result.name = readString(root, "name", "scene", name);
     const std::string expect = readString(root, "expect", "scene", "stands");
@@ -214,15 +254,10 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     }
     BrickTypeLibrary all_types = types;
     if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);
-    if (const YAML::Node generators = root["generator"]) {
-      const TableOptions table = result.table.value_or(TableOptions());
-      if (generators.IsSequence()) {
-        for (const YAML::Node& generator : generators)
-          runGenerator(generator, table, all_types, &result.bricks);
-      } else {
-        runGenerator(generators, table, all_types, &result.bricks);
-      }
-    }
+    checkBrickCount(root, limits.max_bricks);
+    const TableOptions table = result.table.value_or(TableOptions());
+    for (const YAML::Node& generator : generatorNodes(root))
+      runGenerator(generator, table, all_types, &result.bricks);
     if (root["bricks"]) {
       if (!root["bricks"].IsSequence()) fail("bricks", "expected a list");
       std::size_t index = 0;
@@ -231,20 +266,21 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     std::set<std::string> ids;
     for (const ScheduledBrick& brick : result.bricks) {
       const std::string& id = brick.placement.id;
-      if (!id.empty() && !ids.insert(id).second) fail("bricks", "id '" + id + "' appears twice");
+      if (!id.empty() && !ids.insert(id).second)
+        fail("bricks", "id " + quotedId(id) + " appears twice");
       // A generator's long schedule ends here too.
       if (!(brick.at <= kMaxSceneTime))
-        fail("bricks", "brick '" + id + "' is placed at " + std::to_string(brick.at) +
+        fail("bricks", "brick " + quotedId(id) + " is placed at " + formatNumber(brick.at) +
                            " s, after the latest allowed " +
                            std::to_string(static_cast<long>(kMaxSceneTime)) + " s");
       const std::string& type = brick.placement.type;
       if (!type.empty() && !all_types.find(type))
-        fail("bricks", "brick '" + id + "' has unknown type '" + type + "'");
+        fail("bricks", "brick " + quotedId(id) + " has unknown type " + quotedId(type));
     }
   } catch (const SceneError& error) {
-    return Status::error("scene '" + name + "': " + error.message);
+    return Status::error("scene " + quotedPath(name) + ": " + error.message);
   } catch (const YAML::Exception& error) {
-    return Status::error("scene '" + name + "': " + error.what());
+    return Status::error("scene " + quotedPath(name) + ": " + error.what());
   }
   std::stable_sort(result.bricks.begin(), result.bricks.end(),
                    [](const ScheduledBrick& a, const ScheduledBrick& b) { return a.at < b.at; });
@@ -253,7 +289,7 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
 }
 
 Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
-                 const BrickTypeLibrary& types, Scene* scene, int max_bytes) {
+                 const BrickTypeLibrary& types, Scene* scene, const SceneLimits& limits) {
   if (name_or_path.empty()) return Status::error("no scene given");
   std::string path;
   if (exists(name_or_path)) {
@@ -268,14 +304,18 @@ Status loadScene(const std::string& name_or_path, const std::vector<std::string>
     }
   }
   if (path.empty()) {
-    std::string searched;
-    for (const std::string& dir : scene_dirs) searched += (searched.empty() ? "" : ", ") + dir;
-    return Status::error("unknown scene '" + name_or_path + "': no such file, and no " +
-                         name_or_path + ".yaml in [" + searched + "]");
+    // Each directory once, in the order searched, however often it was given.
+    std::vector<std::string> searched;
+    for (const std::string& dir : scene_dirs)
+      if (std::find(searched.begin(), searched.end(), dir) == searched.end())
+        searched.push_back(dir);
+    for (std::string& dir : searched) dir = shortText(dir);
+    return Status::error("unknown scene " + quotedPath(name_or_path) + ": no such file, and no " +
+                         shortText(name_or_path + ".yaml") + " in [" + joinNames(searched) + "]");
   }
   std::string text;
-  if (Status read = readSceneFile(path, max_bytes, &text); !read) return read;
-  return parseScene(text, stem(path), types, scene);
+  if (Status read = readSceneFile(path, limits.max_bytes, &text); !read) return read;
+  return parseScene(text, stem(path), types, scene, limits);
 }
 
 }  // namespace brick_stack_sim

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "brick_stack_sim/core/options/options_reader.h"
+#include "util/text_format.h"
 #include "util/validation.h"
 
 namespace brick_stack_sim {
@@ -96,7 +97,7 @@ Status validate(const WorldOptions& o) {
   if (o.bounds.horizontal < 0.5 * o.table.size.maxCoeff())
     return bad("bounds/horizontal", o.bounds.horizontal,
                "must reach the table's edges (table/size / 2 = " +
-                   std::to_string(0.5 * o.table.size.maxCoeff()) + " m)");
+                   formatNumber(0.5 * o.table.size.maxCoeff()) + " m)");
   if (Status stability = validate(o.stability); !stability)
     return prefixed("stability/", stability);
   return Status::success();

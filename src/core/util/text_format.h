@@ -17,6 +17,14 @@ inline std::string formatVector(const Eigen::Vector3d& v) {
   return text.str();
 }
 
+/// A number as printf's %g writes it: six significant digits and no
+/// trailing zeros ("50", "0.0039", "1e+06"), never "1000000.000000".
+inline std::string formatNumber(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 /// A length given in metres, written in millimetres: "1.25 mm".
 inline std::string millimetres(double metres) {
   std::ostringstream text;
@@ -58,6 +66,25 @@ constexpr std::size_t kQuotedIdLength = 40;
 inline std::string quotedId(const std::string& id) {
   if (id.size() <= kQuotedIdLength) return "'" + id + "'";
   return "'" + id.substr(0, kQuotedIdLength) + "...' (" + std::to_string(id.size()) +
+         " characters)";
+}
+
+/// Longest path or scene name a message repeats in full [characters].
+constexpr std::size_t kQuotedPathLength = 200;
+
+/// `text` as messages show it, unquoted: in full up to `max_length`
+/// characters, else its start and its length ("/tmp/aaa... (10240
+/// characters)"), so that a refusal never echoes a huge request back.
+inline std::string shortText(const std::string& text, std::size_t max_length = kQuotedPathLength) {
+  if (text.size() <= max_length) return text;
+  return text.substr(0, max_length) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
+/// A path or scene name as messages show it, in quotes: as quotedId() does
+/// with ids, cut after kQuotedPathLength characters.
+inline std::string quotedPath(const std::string& path) {
+  if (path.size() <= kQuotedPathLength) return "'" + path + "'";
+  return "'" + path.substr(0, kQuotedPathLength) + "...' (" + std::to_string(path.size()) +
          " characters)";
 }
 

@@ -123,12 +123,13 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   const Eigen::Vector3d spin = (frozen ? Eigen::Vector3d::Zero() : w.scene.angularVelocity(h)) +
                                inverse_inertia * lever.cross(impulse);
   if (velocity.norm() > w.options.max_linear_speed)
-    return Status::error("impulse would leave the brick at " + std::to_string(velocity.norm()) +
-                         " m/s, over the limit of " + std::to_string(w.options.max_linear_speed));
+    return Status::error("impulse would leave the brick at " + formatNumber(velocity.norm()) +
+                         " m/s, over the limit of " + formatNumber(w.options.max_linear_speed) +
+                         " m/s");
   if (spin.norm() > w.options.max_angular_speed)
-    return Status::error("impulse would leave the brick spinning at " +
-                         std::to_string(spin.norm()) + " rad/s, over the limit of " +
-                         std::to_string(w.options.max_angular_speed));
+    return Status::error("impulse would leave the brick spinning at " + formatNumber(spin.norm()) +
+                         " rad/s, over the limit of " + formatNumber(w.options.max_angular_speed) +
+                         " rad/s");
   w.recordChange(WorldState::Change::kBricks);
   if (frozen) {
     StabilityInput input;

@@ -17,8 +17,8 @@ void guardMovers(WorldState* w) {
     const bool runaway = finite && (velocity.norm() > blow_up * w->options.max_linear_speed ||
                                     spin.norm() > blow_up * w->options.max_angular_speed);
     if (!finite || runaway) {
-      const std::string reason = finite ? "numerical blow-up: " + std::to_string(velocity.norm()) +
-                                              " m/s, " + std::to_string(spin.norm()) + " rad/s"
+      const std::string reason = finite ? "numerical blow-up: " + formatNumber(velocity.norm()) +
+                                              " m/s, " + formatNumber(spin.norm()) + " rad/s"
                                         : std::string("Bullet produced NaN/Inf");
       w->scene.restoreAtRest(h, brick->last_good_pose);
       ++(finite ? w->cost.blowups : w->cost.nonfinite);

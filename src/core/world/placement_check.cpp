@@ -56,12 +56,13 @@ Status checkVelocity(const WorldState& w, const Eigen::Vector3d& linear,
   if (!linear.allFinite() || !angular.allFinite())
     return Status::error(prefix + "velocity is not finite");
   if (linear.norm() > w.options.max_linear_speed)
-    return Status::error(prefix + "linear speed " + std::to_string(linear.norm()) +
-                         " m/s exceeds the limit of " + std::to_string(w.options.max_linear_speed));
+    return Status::error(prefix + "linear speed " + formatNumber(linear.norm()) +
+                         " m/s, over the limit of " + formatNumber(w.options.max_linear_speed) +
+                         " m/s");
   if (angular.norm() > w.options.max_angular_speed)
-    return Status::error(prefix + "angular speed " + std::to_string(angular.norm()) +
-                         " rad/s exceeds the limit of " +
-                         std::to_string(w.options.max_angular_speed));
+    return Status::error(prefix + "angular speed " + formatNumber(angular.norm()) +
+                         " rad/s, over the limit of " + formatNumber(w.options.max_angular_speed) +
+                         " rad/s");
   return Status::success();
 }
 

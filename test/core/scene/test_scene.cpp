@@ -240,8 +240,8 @@ TEST(Scene, OnlyRegularFilesWithinTheSizeLimitAreRead) {
     std::ofstream file(small);
     file << "bricks:\n  - {position: [0, 0, 0.0039]}\n" << std::string(2000, '#') << "\n";
   }
-  EXPECT_FALSE(loadScene(small, {}, types, &scene, 1024).ok);
-  EXPECT_TRUE(loadScene(small, {}, types, &scene, 4096).ok);
+  EXPECT_FALSE(loadScene(small, {}, types, &scene, SceneLimits{1024}).ok);
+  EXPECT_TRUE(loadScene(small, {}, types, &scene, SceneLimits{4096}).ok);
   std::filesystem::remove_all(dir);
 }
 
@@ -255,7 +255,10 @@ TEST(Scene, PlacementTimesHaveALimit) {
   const Status generated =
       parseScene("generator: {name: tower, layers: 3, interval: 400000}", "s", types, &scene);
   EXPECT_FALSE(generated.ok);
-  EXPECT_NE(generated.message.find("after the latest allowed 1000000 s"), std::string::npos)
+  // The fourth brick is the first too late: 3 intervals of 4e5 s.
+  EXPECT_NE(generated.message.find("brick 'b3' is placed at 1.2e+06 s, after the latest allowed "
+                                   "1000000 s"),
+            std::string::npos)
       << generated.message;
   EXPECT_TRUE(
       parseScene("bricks:\n  - {at: 1e6, position: [0, 0, 0.0039]}", "s", types, &scene).ok);

@@ -82,6 +82,8 @@ TEST(RunCommandLine, DefaultModeIsTheNodesAndTheConfigFilesSayNothingElse) {
   EXPECT_EQ(p.clock, q.clock);
   EXPECT_EQ(p.real_time_factor, q.real_time_factor);
   EXPECT_EQ(p.frame_id, q.frame_id);
+  EXPECT_EQ(bare.config.data.scene_max_bytes, configured.config.data.scene_max_bytes);
+  EXPECT_EQ(bare.config.data.scene_max_bricks, configured.config.data.scene_max_bricks);
   EXPECT_EQ(configured.config.data.scene, "x");
 }
 
@@ -126,6 +128,9 @@ TEST(RunCommandLine, ConfigTyposAndBadValuesAreNamedWithTheFile) {
       {bad, {"table/size = -2"}},
       {wrong_type, {"solver_iterations", "many"}},
       {"/nonexistent/config.yaml", {"/nonexistent/config.yaml"}},
+      {writeYaml("no_bricks.yaml", "scene_max_bricks: 0\n"),
+       {"scene_max_bricks = 0", "must be in [1, 1000000] bricks"}},
+      {writeYaml("many_bricks.yaml", "scene_max_bricks: 1000001\n"), {"scene_max_bricks"}},
   };
   for (const Case& c : cases) {
     RunCommandLine cli;
@@ -184,10 +189,12 @@ TEST(RunCommandLine, BadFlagsAreNamed) {
   }
 }
 
-/// Runs the real executable, killed after `timeout_seconds` (exit 124);
-/// returns its exit code and fills `output` with stderr.
-int runExecutable(const std::string& args, std::string* output, int timeout_seconds = 300) {
-  const std::string command = "timeout " + std::to_string(timeout_seconds) + " " +
+/// Runs the real executable, killed after `timeout_seconds` (exit 124),
+/// after the shell commands `before` (a ulimit); returns its exit code (-1
+/// when it did not exit, as on an abort) and fills `output` with stderr.
+int runExecutable(const std::string& args, std::string* output, int timeout_seconds = 300,
+                  const std::string& before = "") {
+  const std::string command = before + "timeout " + std::to_string(timeout_seconds) + " " +
                               std::string(STACK_SIM_RUN_PATH) + " " + args + " 2>&1 >/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return -1;
@@ -205,6 +212,60 @@ TEST(StackSimRun, RefusesAFileThatIsNotASceneAtOnce) {
   EXPECT_NE(output.find("not a regular file"), std::string::npos) << output;
   EXPECT_EQ(runExecutable("--scene /tmp --duration 1", &output), 1) << output;
   EXPECT_NE(output.find("is a directory"), std::string::npos) << output;
+}
+
+TEST(StackSimRun, ASceneOverTheBrickCapIsRefusedBeforeItIsBuilt) {
+  // 3.4 kB asking for 5 million bricks once took the runner down with an
+  // uncaught std::bad_alloc.
+  std::string yaml = "generator:\n";
+  for (int i = 0; i < 50; ++i)
+    yaml += "  - {name: tower, layers: 10000, bricks_per_layer: 2, grid: [5, 1]}\n";
+  const std::string scene = writeYaml("run_over_cap.yaml", yaml);
+  std::string output;
+  EXPECT_EQ(runExecutable("--scene " + scene + " --duration 1", &output, 20), 1) << output;
+  EXPECT_NE(output.find("scene 'run_over_cap': generator 2 (tower) would bring the scene to 200000 "
+                        "bricks: at most 100000 (scene_max_bricks)"),
+            std::string::npos)
+      << output;
+  // The cap is the config's, as the node's is its parameter.
+  const std::string config = writeYaml("run_cap.yaml", "scene_max_bricks: 20\n");
+  const std::string towers =
+      writeYaml("run_towers.yaml",
+                "generator:\n  - {name: tower, layers: 5}\n  - {name: tower, "
+                "layers: 6, origin: [0.3, 0]}\n");
+  EXPECT_EQ(runExecutable("--config " + config + " --scene " + towers + " --duration 0.1", &output),
+            1)
+      << output;
+  EXPECT_NE(output.find("generator 2 (tower) would bring the scene to 22 bricks: at most 20"),
+            std::string::npos)
+      << output;
+  EXPECT_EQ(runExecutable("--scene " + towers + " --duration 0.1", &output), 0) << output;
+}
+
+TEST(StackSimRun, RunningOutOfMemoryIsAFailedRunNotAnAbort) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "the sanitizers reserve more address space than the limit allows";
+#endif
+  // 100 000 listed bricks: within the cap, but its YAML tree alone takes
+  // some 500 MB, more than the 200 MB of address space the runner gets here.
+  std::ostringstream yaml;
+  yaml << "bricks:\n";
+  for (int i = 0; i < 100000; ++i)
+    yaml << "  - {id: b" << i << ", at: " << i << ", position: [" << (i % 50) * 0.15 - 3.5 << ", "
+         << (i / 50 % 50) * 0.15 - 3.5 << ", 0.0039]}\n";
+  const std::string scene = writeYaml("run_out_of_memory.yaml", yaml.str());
+  std::string output;
+  // The same limit leaves room for a small run.
+  EXPECT_EQ(runExecutable("--scene single_drop --duration 0.1", &output, 60, "ulimit -v 200000;"),
+            0)
+      << output;
+  EXPECT_EQ(runExecutable("--scene " + scene + " --duration 0", &output, 60, "ulimit -v 200000;"),
+            1)
+      << output;
+  EXPECT_NE(output.find("stack_sim_run: out of memory while running the scene (std::bad_alloc)"),
+            std::string::npos)
+      << output;
+  std::remove(scene.c_str());
 }
 
 TEST(StackSimRun, ASceneWithABadBrickIsRefusedUnlessAskedToSkipIt) {

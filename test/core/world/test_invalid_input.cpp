@@ -83,7 +83,11 @@ TEST_P(InvalidInput, NonFiniteOrExcessiveVelocity) {
   }
   BrickPlacement p = placement("new", {0, 0.1, 0.0039});
   p.linear_velocity.x() = 1e6;
-  expectRefused(world_->addBrick(p), "linear speed");
+  // Numbers as %g writes them, not "1000000.000000 m/s exceeds the limit of 50.000000".
+  expectRefused(world_->addBrick(p), "linear speed 1e+06 m/s, over the limit of 50 m/s");
+  p.linear_velocity.x() = 0.0;
+  p.angular_velocity.z() = 600.0;
+  expectRefused(world_->addBrick(p), "angular speed 600 rad/s, over the limit of 500 rad/s");
 }
 
 TEST_P(InvalidInput, UnknownTypeAndBadOrDuplicateId) {
@@ -156,7 +160,8 @@ TEST_P(InvalidInput, NonFiniteImpulse) {
   expectRefused(world_->applyImpulse("base", {kNaN, 0, 0}, {0, 0, 0}), "impulse is not finite");
   expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {0, kInf, 0}), "point");
   expectRefused(world_->applyImpulse("ghost", {0, 0, 0.001}, {0, 0, 0}), "no brick");
-  expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0.0039}), "m/s, over the limit");
+  expectRefused(world_->applyImpulse("base", {1e3, 0, 0}, {0, 0, 0.0039}),
+                "m/s, over the limit of 50 m/s");
   // 0.5 N s at the end of the brick about z: 0.5 * L/2 / I_zz = 2000 rad/s.
   expectRefused(world_->applyImpulse("base", {0, 0.5, 0}, {0.0585, 0, 0.0039}), "spinning");
   expectRefused(world_->applyImpulse("base", {0, 0, 0.001}, {1.0, 0, 0.0039}), "outside brick");
@@ -193,7 +198,7 @@ TEST(InvalidOptions, EveryBadSettingIsNamed) {
       {"table/friction", [](WorldOptions* o) { o->table.friction = -0.1; }},
       {"bounds/horizontal", [](WorldOptions* o) { o->bounds.horizontal = kNaN; }},
       {"bounds/horizontal", [](WorldOptions* o) { o->bounds.horizontal = 1e5; }},
-      {"bounds/horizontal = 0.5: must reach the table's edges",
+      {"bounds/horizontal = 0.5: must reach the table's edges (table/size / 2 = 0.6 m)",
        [](WorldOptions* o) { o->bounds.horizontal = 0.5; }},  // the table is 1.2 m long
       {"bounds/height", [](WorldOptions* o) { o->bounds.height = 0.0; }},
       {"overlap_tolerance", [](WorldOptions* o) { o->overlap_tolerance = kNaN; }},

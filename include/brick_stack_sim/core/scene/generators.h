@@ -3,14 +3,15 @@
 // structures whose statics are known, so scenes, benchmarks and tests can
 // build them exactly.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/types/world_options.h"
 
 namespace brick_stack_sim {
@@ -181,5 +182,20 @@ Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibra
 /// Appends a pile drop.
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
                     std::vector<ScheduledBrick>* bricks);
+
+/// How many bricks each generator appends, from its parameters alone (what
+/// a scene is counted by before it is built); parameters the generator
+/// refuses count what their numbers say, a negative count as 0, and a count
+/// beyond kMaxCountedBricks as that.
+constexpr std::int64_t kMaxCountedBricks = std::int64_t{1} << 50;
+std::int64_t brickCount(const TowerParams& params);
+std::int64_t brickCount(const HarmonicParams& params);
+std::int64_t brickCount(const SlantTowerParams& params);
+std::int64_t brickCount(const PyramidParams& params);
+std::int64_t brickCount(const PileParams& params);
+std::int64_t brickCount(const AFrameParams& params);
+std::int64_t brickCount(const CardHouseParams& params);
+std::int64_t brickCount(const ImpactParams& params);
+std::int64_t brickCount(const KaplaRecordParams& params);
 
 }  // namespace brick_stack_sim

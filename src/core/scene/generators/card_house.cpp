@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/generators/generator_support.h"
+#include "util/text_format.h"
 
 namespace brick_stack_sim {
 
@@ -29,7 +30,7 @@ struct VShape {
 Status checkAngle(const char* generator, double angle) {
   // Beyond 80 degrees a V is two bricks lying on each other's edge.
   if (!std::isfinite(angle) || angle <= 0.0 || angle > 80.0 * M_PI / 180.0)
-    return Status::error(std::string(generator) + " angle = " + std::to_string(angle) +
+    return Status::error(std::string(generator) + " angle = " + formatNumber(angle) +
                          ": must be in (0, 1.396] rad (0 to 80 degrees from vertical)");
   return Status::success();
 }
@@ -59,6 +60,16 @@ void appendV(const BrickType& type, const VShape& v, double apex_x, double y, do
 }
 
 }  // namespace
+
+std::int64_t brickCount(const AFrameParams& /*params*/) { return 2; }
+
+std::int64_t brickCount(const CardHouseParams& params) {
+  // Levels of n, n - 1, ..., 1 V's of two bricks, and a level brick across
+  // each two neighbouring V's of every level but the top one.
+  const double n = params.levels;
+  if (n < 1.0) return 0;
+  return clampedCount(n * (n + 1.0) + 0.5 * n * (n - 1.0));
+}
 
 Status generateAFrame(const AFrameParams& params, const BrickTypeLibrary& types,
                       std::vector<ScheduledBrick>* bricks) {
@@ -91,7 +102,7 @@ Status generateCardHouse(const CardHouseParams& params, const BrickTypeLibrary& 
   // 2 % of its length to spare, and a V must stand on one with both feet.
   const double reach = 0.5 * length - v.topEdge() - 0.02 * length;
   if (params.levels > 1 && (reach <= 0.0 || v.halfWidth() > 0.5 * length - 0.02 * length))
-    return Status::error("card_house angle = " + std::to_string(params.angle) +
+    return Status::error("card_house angle = " + formatNumber(params.angle) +
                          " rad: a V that wide cannot stand on a level brick of type '" +
                          type->name + "'; use a smaller angle or levels: 1");
   // Neighbouring V's side by side, or closer where a level brick could not
@@ -124,26 +135,52 @@ Status generateCardHouse(const CardHouseParams& params, const BrickTypeLibrary& 
   return Status::success();
 }
 
-void readAFrameGenerator(const YAML::Node& node, const std::string& where,
-                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+AFrameParams readAFrameParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where, {"angle", "origin"}, Placing::kAtOnce);
   AFrameParams params;
   params.angle = readNumber(node, "angle", where, params.angle);
   params.type = readString(node, "type", where);
   params.start = readNumber(node, "start", where, params.start);
   params.origin = readVector<2>(node, "origin", where, params.origin);
+  return params;
+}
+
+}  // namespace
+
+void readAFrameGenerator(const YAML::Node& node, const std::string& where,
+                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const AFrameParams params = readAFrameParams(node, where);
   failUnless(generateAFrame(params, context.types, bricks), where);
 }
 
-void readCardHouseGenerator(const YAML::Node& node, const std::string& where,
-                            const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+std::int64_t countAFrameGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readAFrameParams(node, where));
+}
+
+namespace {
+
+CardHouseParams readCardHouseParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where, {"levels", "angle", "origin"}, Placing::kOneByOne);
   CardHouseParams params;
   params.levels = readInt(node, "levels", where, params.levels);
   params.angle = readNumber(node, "angle", where, params.angle);
   readTypeAndTiming(node, where, &params);
   params.origin = readVector<2>(node, "origin", where, params.origin);
+  return params;
+}
+
+}  // namespace
+
+void readCardHouseGenerator(const YAML::Node& node, const std::string& where,
+                            const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const CardHouseParams params = readCardHouseParams(node, where);
   failUnless(generateCardHouse(params, context.types, bricks), where);
+}
+
+std::int64_t countCardHouseGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readCardHouseParams(node, where));
 }
 
 }  // namespace brick_stack_sim

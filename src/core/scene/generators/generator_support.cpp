@@ -29,6 +29,12 @@ ScheduledBrick& appendBrick(const BrickType& type, const Eigen::Vector3d& positi
   return bricks->back();
 }
 
+std::int64_t clampedCount(double count) {
+  if (!(count > 0.0)) return 0;
+  if (count >= static_cast<double>(kMaxCountedBricks)) return kMaxCountedBricks;
+  return static_cast<std::int64_t>(count);
+}
+
 Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy) {
   return (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
           Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *

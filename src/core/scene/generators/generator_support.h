@@ -2,6 +2,7 @@
 // What the scene generators share: their YAML entry point, the checks every
 // generator makes, and the brick type they place.
 
+#include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct GeneratorContext {
 using GeneratorReader = void (*)(const YAML::Node& node, const std::string& where,
                                  const GeneratorContext& context,
                                  std::vector<ScheduledBrick>* bricks);
+/// Reads a generator's YAML map and says how many bricks it would append,
+/// building none; throws scene_yaml::SceneError.
+using GeneratorCounter = std::int64_t (*)(const YAML::Node& node, const std::string& where);
 
 void readTowerGenerator(const YAML::Node& node, const std::string& where,
                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
@@ -47,6 +51,20 @@ void readKaplaRecordGenerator(const YAML::Node& node, const std::string& where,
                               const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+
+std::int64_t countTowerGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countHarmonicGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countSlantTowerGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countPyramidGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countAFrameGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countCardHouseGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countImpactGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countKaplaRecordGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countPileGenerator(const YAML::Node& node, const std::string& where);
+
+/// A brick count computed in floating point, as brickCount() says it:
+/// negative as 0, beyond kMaxCountedBricks as that.
+std::int64_t clampedCount(double count);
 
 /// What every generator checks before it places anything: its start and
 /// interval (finite, >= 0 s) and the type it places (the requested one, or

@@ -7,6 +7,8 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 
+std::int64_t brickCount(const HarmonicParams& params) { return clampedCount(params.bricks); }
+
 Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
                         const BrickTypeLibrary& types, std::vector<ScheduledBrick>* bricks) {
   if (params.bricks < 1 || params.bricks > 1000)
@@ -32,14 +34,27 @@ Status generateHarmonic(const HarmonicParams& params, const TableOptions& table,
   return Status::success();
 }
 
-void readHarmonicGenerator(const YAML::Node& node, const std::string& where,
-                           const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+HarmonicParams readHarmonicParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where, {"bricks", "factor"}, Placing::kOneByOne);
   HarmonicParams params;
   params.bricks = readInt(node, "bricks", where, params.bricks);
   params.factor = readNumber(node, "factor", where, params.factor);
   readTypeAndTiming(node, where, &params);
+  return params;
+}
+
+}  // namespace
+
+void readHarmonicGenerator(const YAML::Node& node, const std::string& where,
+                           const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const HarmonicParams params = readHarmonicParams(node, where);
   failUnless(generateHarmonic(params, context.table, context.types, bricks), where);
+}
+
+std::int64_t countHarmonicGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readHarmonicParams(node, where));
 }
 
 }  // namespace brick_stack_sim

@@ -8,6 +8,11 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 
+std::int64_t brickCount(const ImpactParams& params) {
+  const std::int64_t tower = brickCount(params.tower);
+  return tower == 0 ? 0 : std::min(tower + 1, kMaxCountedBricks);
+}
+
 Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
                       std::vector<ScheduledBrick>* bricks) {
   const TowerParams& tower = params.tower;
@@ -48,8 +53,9 @@ Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
   return Status::success();
 }
 
-void readImpactGenerator(const YAML::Node& node, const std::string& where,
-                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+ImpactParams readImpactParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where,
                        {"layers", "bricks_per_layer", "layer", "speed", "delay", "gap"},
                        Placing::kOneByOne);
@@ -61,7 +67,19 @@ void readImpactGenerator(const YAML::Node& node, const std::string& where,
   params.speed = readNumber(node, "speed", where, params.speed);
   params.delay = readNumber(node, "delay", where, params.delay);
   params.gap = readNumber(node, "gap", where, params.gap);
+  return params;
+}
+
+}  // namespace
+
+void readImpactGenerator(const YAML::Node& node, const std::string& where,
+                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const ImpactParams params = readImpactParams(node, where);
   failUnless(generateImpact(params, context.types, bricks), where);
+}
+
+std::int64_t countImpactGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readImpactParams(node, where));
 }
 
 }  // namespace brick_stack_sim

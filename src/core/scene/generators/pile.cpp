@@ -9,6 +9,8 @@ using scene_yaml::readInt;
 using scene_yaml::readNumber;
 using scene_yaml::readVector;
 
+std::int64_t brickCount(const PileParams& params) { return clampedCount(params.bricks); }
+
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
                     std::vector<ScheduledBrick>* bricks) {
   if (params.bricks < 1 || params.bricks > 100000)
@@ -59,8 +61,9 @@ Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
   return Status::success();
 }
 
-void readPileGenerator(const YAML::Node& node, const std::string& where,
-                       const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+PileParams readPileParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where,
                        {"bricks", "columns", "rows", "cell", "layer_height", "base_height",
                         "max_tilt", "seed", "origin"},
@@ -77,7 +80,19 @@ void readPileGenerator(const YAML::Node& node, const std::string& where,
   params.seed = static_cast<unsigned>(readInt(node, "seed", where, static_cast<int>(params.seed)));
   params.type = scene_yaml::readString(node, "type", where);
   params.start = readNumber(node, "start", where, params.start);
+  return params;
+}
+
+}  // namespace
+
+void readPileGenerator(const YAML::Node& node, const std::string& where,
+                       const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const PileParams params = readPileParams(node, where);
   failUnless(generatePile(params, context.types, bricks), where);
+}
+
+std::int64_t countPileGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readPileParams(node, where));
 }
 
 }  // namespace brick_stack_sim

@@ -7,6 +7,11 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 
+std::int64_t brickCount(const PyramidParams& params) {
+  // Rows of base, base - 1, ..., 1 bricks.
+  return clampedCount(0.5 * params.base * (params.base + 1.0));
+}
+
 Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& types,
                        std::vector<ScheduledBrick>* bricks) {
   if (params.base < 1 || params.base > 200)
@@ -32,14 +37,27 @@ Status generatePyramid(const PyramidParams& params, const BrickTypeLibrary& type
   return Status::success();
 }
 
-void readPyramidGenerator(const YAML::Node& node, const std::string& where,
-                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+PyramidParams readPyramidParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where, {"base", "gap"}, Placing::kOneByOne);
   PyramidParams params;
   params.base = readInt(node, "base", where, params.base);
   params.gap = readNumber(node, "gap", where, params.gap);
   readTypeAndTiming(node, where, &params);
+  return params;
+}
+
+}  // namespace
+
+void readPyramidGenerator(const YAML::Node& node, const std::string& where,
+                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const PyramidParams params = readPyramidParams(node, where);
   failUnless(generatePyramid(params, context.types, bricks), where);
+}
+
+std::int64_t countPyramidGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readPyramidParams(node, where));
 }
 
 }  // namespace brick_stack_sim

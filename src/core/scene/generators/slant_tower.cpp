@@ -7,6 +7,8 @@ namespace brick_stack_sim {
 using scene_yaml::readInt;
 using scene_yaml::readNumber;
 
+std::int64_t brickCount(const SlantTowerParams& params) { return clampedCount(params.layers); }
+
 Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary& types,
                           std::vector<ScheduledBrick>* bricks) {
   if (params.layers < 1 || params.layers > 10000)
@@ -25,14 +27,27 @@ Status generateSlantTower(const SlantTowerParams& params, const BrickTypeLibrary
   return Status::success();
 }
 
-void readSlantTowerGenerator(const YAML::Node& node, const std::string& where,
-                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+SlantTowerParams readSlantTowerParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where, {"layers", "offset"}, Placing::kOneByOne);
   SlantTowerParams params;
   params.layers = readInt(node, "layers", where, params.layers);
   params.offset = readNumber(node, "offset", where, params.offset);
   readTypeAndTiming(node, where, &params);
+  return params;
+}
+
+}  // namespace
+
+void readSlantTowerGenerator(const YAML::Node& node, const std::string& where,
+                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const SlantTowerParams params = readSlantTowerParams(node, where);
   failUnless(generateSlantTower(params, context.types, bricks), where);
+}
+
+std::int64_t countSlantTowerGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readSlantTowerParams(node, where));
 }
 
 }  // namespace brick_stack_sim

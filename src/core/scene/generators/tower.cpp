@@ -8,6 +8,11 @@ using scene_yaml::readInt;
 using scene_yaml::readNumber;
 using scene_yaml::readVector;
 
+std::int64_t brickCount(const TowerParams& params) {
+  return clampedCount(static_cast<double>(params.layers) * params.bricks_per_layer * params.grid_x *
+                      params.grid_y);
+}
+
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
                      std::vector<ScheduledBrick>* bricks) {
   if (params.layers < 1 || params.layers > 10000)
@@ -33,8 +38,7 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   if (params.grid_x < 1 || params.grid_y < 1 || params.grid_x * params.grid_y > 10000)
     return Status::error("tower grid must have 1 to 10000 copies");
   // The same bound as a pile: more bricks than any table holds is a typo.
-  const long total =
-      static_cast<long>(params.layers) * params.bricks_per_layer * params.grid_x * params.grid_y;
+  const std::int64_t total = brickCount(params);
   if (total > 100000)
     return Status::error("tower of " + std::to_string(total) +
                          " bricks: at most 100000 (layers x bricks_per_layer x grid)");
@@ -64,8 +68,9 @@ Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
   return Status::success();
 }
 
-void readTowerGenerator(const YAML::Node& node, const std::string& where,
-                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+namespace {
+
+TowerParams readTowerParams(const YAML::Node& node, const std::string& where) {
   requireGeneratorKeys(node, where,
                        {"layers", "bricks_per_layer", "gap", "origin", "grid", "spacing"},
                        Placing::kOneByOne);
@@ -82,7 +87,19 @@ void readTowerGenerator(const YAML::Node& node, const std::string& where,
   params.bricks_per_layer = readInt(node, "bricks_per_layer", where, params.bricks_per_layer);
   readTypeAndTiming(node, where, &params);
   params.gap = readNumber(node, "gap", where, params.gap);
+  return params;
+}
+
+}  // namespace
+
+void readTowerGenerator(const YAML::Node& node, const std::string& where,
+                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
+  const TowerParams params = readTowerParams(node, where);
   failUnless(generateTower(params, context.types, bricks), where);
+}
+
+std::int64_t countTowerGenerator(const YAML::Node& node, const std::string& where) {
+  return brickCount(readTowerParams(node, where));
 }
 
 }  // namespace brick_stack_sim
