@@ -4,6 +4,7 @@
 
 #include <tf2_msgs/TFMessage.h>
 
+#include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace brick_stack_sim {
@@ -23,9 +24,21 @@ geometry_msgs::TransformStamped stamped(const std::string& parent, const std::st
 
 }  // namespace
 
-BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const std::string& frame_id,
-                                 const std::string& frame_prefix, double static_period)
-    : frame_id_(frame_id), frame_prefix_(frame_prefix), static_period_(static_period) {
+FrameNames::FrameNames(const std::string& frame_id, const std::string& frame_prefix)
+    : fixed_(frame_id), prefix_(frame_prefix), table_(prefixedFrame(frame_prefix, "table")) {}
+
+std::string FrameNames::brick(const std::string& id) const { return prefixedFrame(prefix_, id); }
+
+Status FrameNames::checkBrickId(const std::string& id) const {
+  if (id.empty() || brick(id) != fixed_) return Status::success();
+  return Status::error("id '" + id + "' would name the tf frame '" + fixed_ +
+                       "', the fixed frame (~frame_id) itself: choose another id, or set "
+                       "~frame_prefix");
+}
+
+BrickTransforms::BrickTransforms(ros::NodeHandle& node_handle, const FrameNames& names,
+                                 double static_period)
+    : names_(names), static_period_(static_period) {
   // Global names, as tf2_ros's broadcasters use, whatever the node's namespace.
   tf_publisher_ = node_handle.advertise<tf2_msgs::TFMessage>("/tf", 100);
   static_publisher_ = node_handle.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
@@ -55,7 +68,7 @@ void BrickTransforms::publish(const BrickMirror& mirror, const BrickMirror::Chan
       return;
     }
     moved.transforms.push_back(
-        stamped(frame_id_, frame_prefix_ + snapshot.id, toTransformMsg(snapshot.pose), stamp));
+        stamped(names_.fixed(), names_.brick(snapshot.id), toTransformMsg(snapshot.pose), stamp));
     still_moving[snapshot.serial] = Moving{snapshot.pose, stamp, false};
   };
   for (std::size_t index : changes.moved) {
@@ -97,13 +110,13 @@ void BrickTransforms::publishStatic(const BrickMirror& mirror, const ros::Time& 
   last_static_ = ros::WallTime::now();
   tf2_msgs::TFMessage all;
   // The table top's centre is the fixed frame's origin.
-  all.transforms.push_back(stamped(frame_id_, frame_prefix_ + "table",
+  all.transforms.push_back(stamped(names_.fixed(), names_.table(),
                                    toTransformMsg(Eigen::Isometry3d::Identity()), stamp));
   // Stamped now, not when they came to rest: a listener that holds such a
   // frame as a moving one may then look it up until now.
   for (const MirroredBrick& brick : mirror.bricks())
     if (!moving_.count(brick.snapshot.serial) && brick.snapshot.pose.matrix().allFinite())
-      all.transforms.push_back(stamped(frame_id_, frame_prefix_ + brick.snapshot.id,
+      all.transforms.push_back(stamped(names_.fixed(), names_.brick(brick.snapshot.id),
                                        toTransformMsg(brick.snapshot.pose), stamp));
   static_publisher_.publish(all);
 }

@@ -5,7 +5,9 @@
 // /tf_static, so that a listener that connects later still finds every frame.
 // The static set is sent again when it changes, at most once per
 // `static_period` of wall time: a brick that came to rest was last sent on
-// /tf at its resting pose already, so only late listeners wait for it.
+// /tf at its resting pose already, so only late listeners wait for it. Each
+// send is the whole current set, so the latched message loses a removed
+// brick (docs/ros_interface.md, "Topics").
 
 #include <map>
 #include <string>
@@ -13,17 +15,36 @@
 #include <ros/ros.h>
 #include <Eigen/Geometry>
 
+#include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/ros/brick_mirror.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
 
+/// The frames the node names on tf (docs/ros_interface.md, "Frames and
+/// units"): `<frame_prefix>/<id>` per brick and `<frame_prefix>/table`, each
+/// a child of the fixed frame `frame_id` (prefixedFrame joins them).
+class FrameNames {
+ public:
+  FrameNames(const std::string& frame_id, const std::string& frame_prefix);
+  const std::string& fixed() const { return fixed_; }
+  const std::string& table() const { return table_; }
+  std::string brick(const std::string& id) const;
+  /// Refuses a brick id whose frame would be the fixed frame itself (tf2's
+  /// TF_SELF_TRANSFORM), naming both.
+  Status checkBrickId(const std::string& id) const;
+
+ private:
+  std::string fixed_;
+  std::string prefix_;
+  std::string table_;
+};
+
 class BrickTransforms {
  public:
-  /// `frame_id`: the fixed frame; `frame_prefix` goes before every brick id
-  /// and "table". Advertises /tf and a latched /tf_static on `node_handle`.
-  BrickTransforms(ros::NodeHandle& node_handle, const std::string& frame_id,
-                  const std::string& frame_prefix, double static_period);
+  /// `names`: the fixed frame and the frames of the bricks and the table.
+  /// Advertises /tf and a latched /tf_static on `node_handle`.
+  BrickTransforms(ros::NodeHandle& node_handle, const FrameNames& names, double static_period);
 
   /// Sends the bricks that moved on /tf, stamped `stamp`, and the static
   /// set (every other finite brick of `mirror`) when due. `changes`: what
@@ -47,8 +68,7 @@ class BrickTransforms {
   };
   void publishStatic(const BrickMirror& mirror, const ros::Time& stamp);
 
-  std::string frame_id_;
-  std::string frame_prefix_;
+  FrameNames names_;
   ros::WallDuration static_period_;
   ros::Publisher tf_publisher_;
   ros::Publisher static_publisher_;

@@ -3,11 +3,15 @@
 // sees the clock standing still and every brick; with publish_clock,
 // sim.launch sets /use_sim_time and every stamp (~bricks, ~markers, ~events,
 // tf, /tf_static, ~get_bricks) is sim time; tf names the bricks and the table
-// under the frame prefix (sim1/ in conventions.test).
+// under the frame prefix with its '/' (sim1 in conventions.test gives
+// sim1/table), and the latched /tf_static loses what a removal or a reset
+// took away.
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -25,7 +29,45 @@
 namespace brick_stack_sim {
 namespace {
 
-class ConventionsNode : public test::NodeFixture {};
+class ConventionsNode : public test::NodeFixture {
+ protected:
+  /// The child frames of the latched /tf_static as a subscriber that joins
+  /// now reads them (tf2_ros's listener subscribes the same way); empty when
+  /// nothing arrived within 5 s.
+  static std::set<std::string> latchedStaticFrames(ros::NodeHandle& nh) {
+    std::mutex mutex;
+    std::optional<std::set<std::string>> frames;
+    ros::Subscriber subscriber = nh.subscribe<tf2_msgs::TFMessage>(
+        "/tf_static", 10, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+          std::lock_guard<std::mutex> lock(mutex);
+          frames.emplace();
+          for (const auto& transform : msg->transforms) frames->insert(transform.child_frame_id);
+        });
+    waitFor(
+        [&] {
+          std::lock_guard<std::mutex> lock(mutex);
+          return frames.has_value();
+        },
+        5.0);
+    subscriber.shutdown();
+    std::lock_guard<std::mutex> lock(mutex);
+    return frames.value_or(std::set<std::string>());
+  }
+
+  /// Waits at most `seconds` for a new subscriber's latched /tf_static to
+  /// hold `frame` (`present`) or not; the frames it last read.
+  static std::set<std::string> waitForStaticFrame(ros::NodeHandle& nh, const std::string& frame,
+                                                  bool present, double seconds) {
+    std::set<std::string> frames;
+    waitFor(
+        [&] {
+          frames = latchedStaticFrames(nh);
+          return frames.count(frame) == (present ? 1u : 0u);
+        },
+        seconds);
+    return frames;
+  }
+};
 
 TEST_F(ConventionsNode, ClockAndBricksKeepArrivingWhilePaused) {
   ASSERT_TRUE(place("resting", 0.2, 0.1, 0.0039).success);
@@ -170,6 +212,48 @@ TEST_F(ConventionsNode, TfNamesBricksAndTableUnderTheFramePrefix) {
   EXPECT_EQ(table.transform.rotation.w, 1.0);
   // No bare brick id on tf: a robot's frame called "framed" would clash.
   EXPECT_FALSE(buffer._frameExists("framed"));
+}
+
+// A latched /tf_static message is replaced by the publisher's next one:
+// after a removal or a reset the node's message must be the current set, so
+// that a listener that joins later does not resolve a brick that went
+// (docs/ros_interface.md, "Topics").
+TEST_F(ConventionsNode, RemovedBricksLeaveTheLatchedStaticSet) {
+  ASSERT_TRUE(setPaused(false));
+  ASSERT_TRUE(place("gone", 0.4, -0.25, 0.0039).success);
+  ASSERT_TRUE(place("stays", 0.4, 0.25, 0.0039).success);
+  // At rest, both join the static set (sent at most once a second).
+  std::set<std::string> frames = waitForStaticFrame(nh_, "sim1/gone", true, 10.0);
+  ASSERT_EQ(frames.count("sim1/gone"), 1u) << "the resting brick never reached /tf_static";
+  ASSERT_TRUE(sim_->removeBrick("gone").ok);
+  frames = waitForStaticFrame(nh_, "sim1/gone", false, 5.0);
+  EXPECT_EQ(frames.count("sim1/gone"), 0u) << "the removed brick is still on /tf_static";
+  EXPECT_EQ(frames.count("sim1/stays"), 1u);
+  EXPECT_EQ(frames.count("sim1/table"), 1u);
+  // A tf2 listener that starts now cannot resolve it, and still has the table.
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::string error;
+  ASSERT_TRUE(buffer.canTransform("world", "sim1/stays", ros::Time(0), ros::Duration(5.0), &error))
+      << error;
+  EXPECT_FALSE(buffer.canTransform("world", "sim1/gone", ros::Time(0), ros::Duration(1.0)));
+}
+
+TEST_F(ConventionsNode, ResetEmptiesTheLatchedStaticSet) {
+  ASSERT_TRUE(setPaused(false));
+  ASSERT_TRUE(place("before_reset", -0.4, -0.25, 0.0039).success);
+  std::set<std::string> frames = waitForStaticFrame(nh_, "sim1/before_reset", true, 10.0);
+  ASSERT_EQ(frames.count("sim1/before_reset"), 1u) << "the resting brick never reached /tf_static";
+  ASSERT_TRUE(sim_->reset("").ok);
+  frames = waitForStaticFrame(nh_, "sim1/before_reset", false, 5.0);
+  // The empty table: its frame alone.
+  EXPECT_EQ(frames, std::set<std::string>{"sim1/table"});
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::string error;
+  ASSERT_TRUE(buffer.canTransform("world", "sim1/table", ros::Time(0), ros::Duration(5.0), &error))
+      << error;
+  EXPECT_FALSE(buffer.canTransform("world", "sim1/before_reset", ros::Time(0), ros::Duration(1.0)));
 }
 
 }  // namespace

@@ -241,6 +241,7 @@ TEST(NodeOptions, AcceptsBoundaryStabilityThresholds) {
 TEST(NodeOptions, RefusesBadStrings) {
   expectRefused("frame_id", std::string(""));
   expectRefused("frame_id", std::string("/world"));
+  expectRefused("frame_id", std::string("table"));  // the node's own table frame
   expectRefused("frame_prefix", std::string("/sim1/"));
   expectRefused("frame_prefix", std::string("sim 1/"));
 }
