@@ -3,6 +3,8 @@
 #include <exception>
 #include <utility>
 
+#include "brick_stack_sim/core/options/yaml_parameters.h"
+
 namespace brick_stack_sim {
 namespace ros_adapter {
 
@@ -122,6 +124,64 @@ Status readPrivateParameters(const ros::NodeHandle& private_node_handle, Paramet
                          ", expected a namespace of parameters");
   }
   *tree = std::move(converted);
+  return Status::success();
+}
+
+Status listFromString(const std::string& key, ParameterValue* parameters, std::string* note) {
+  const ParameterValue* member = parameters->isMap() ? parameters->find(key) : nullptr;
+  if (member == nullptr || !member->isString()) return Status::success();
+  const std::string text = member->asString();
+  const std::string how = ": set a list with rosparam set <node>/" + key +
+                          " \"[a, b]\" or <rosparam param=\"" + key +
+                          "\">[a, b]</rosparam> in a launch file";
+  ParameterValue list = ParameterValue::makeList({ParameterValue::makeString(text)});
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first != std::string::npos && text[first] == '[') {
+    ParameterValue parsed;
+    const Status status = parseYamlParameters("value: " + text, "~" + key, &parsed);
+    const ParameterValue* value = status ? parsed.find("value") : nullptr;
+    bool strings = value != nullptr && value->isList();
+    for (std::size_t i = 0; strings && i < value->list().size(); ++i)
+      strings = value->list()[i].isString();
+    if (!strings)
+      return Status::error("parameter ~" + key + " = '" + shortenForMessage(text, 200) +
+                           "' is no list of strings" + how);
+    list = *value;
+  }
+  if (note != nullptr) {
+    std::string items;
+    for (const ParameterValue& item : list.list())
+      items += (items.empty() ? "'" : ", '") + shortenForMessage(item.asString(), 200) + "'";
+    *note = "parameter ~" + key + " is the string '" + shortenForMessage(text, 200) +
+            "' (as rosrun's _" + key + ":= sets it): read as the list [" + items + "]";
+  }
+  parameters->set(key, std::move(list));
+  return Status::success();
+}
+
+Status readStringList(const ros::NodeHandle& node_handle, const std::string& key,
+                      std::vector<std::string>* list, std::string* note) {
+  XmlRpc::XmlRpcValue value;
+  try {
+    if (!node_handle.getParam(key, value)) return Status::success();
+  } catch (...) {
+    return Status::error("cannot read parameter ~" + key);
+  }
+  ParameterValue tree = ParameterValue::makeMap();
+  ParameterValue member;
+  if (Status converted = fromXmlRpc(value, "~" + key, &member); !converted) return converted;
+  tree.set(key, std::move(member));
+  if (Status listed = listFromString(key, &tree, note); !listed) return listed;
+  const ParameterValue& read = *tree.find(key);
+  std::vector<std::string> strings;
+  for (std::size_t i = 0; read.isList() && i < read.list().size(); ++i) {
+    if (!read.list()[i].isString()) break;
+    strings.push_back(read.list()[i].asString());
+  }
+  if (!read.isList() || strings.size() != read.list().size())
+    return Status::error("parameter ~" + key + " is " + read.describe() +
+                         ", expected a list of strings");
+  *list = std::move(strings);
   return Status::success();
 }
 

@@ -1,6 +1,6 @@
 // The builder's ledger, fed by hand: when a placed brick counts as at rest,
-// as fallen or as knocked, and what a build that should stand or collapse
-// reports. No master: the builder feeds it what ~get_bricks returns.
+// as fallen, as knocked or as shifted in place by a throw, and what a build that should stand or
+// collapse reports. No master: the builder feeds it what ~get_bricks returns.
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/planner/build_ledger.h"
@@ -100,19 +100,87 @@ TEST(BuildLedger, NamesTheFirstBrickToFallAndWhenInTheBuild) {
 TEST(BuildLedger, WhatFallsAfterAThrowIsKnockedNotAFailedBuild) {
   BuildLedger ledger;
   ledger.recordPlaced("b0", at(0, 0, 0.0039), 0.0, false);
-  ledger.observe(0.1, {seen("b0", at(0, 0, 0.0039))});
-  ledger.recordPlaced("striker", at(0, -0.03, 0.0039), 1.0, true);
-  const auto fell = ledger.observe(
-      1.1, {seen("b0", at(0, 0.02, 0.0039), false), seen("striker", at(0, -0.1, -0.5), false)});
+  ledger.recordPlaced("b1", at(0, 0, 0.0117), 0.5, false);
+  ledger.observe(0.6, {seen("b0", at(0, 0, 0.0039)), seen("b1", at(0, 0, 0.0117))});
+  ledger.recordPlaced("striker", at(0, -0.03, 0.0117), 1.0, true);
+  // b1 is thrown off b0 onto the table: 7.8 mm lower, no longer on b0.
+  const auto fell =
+      ledger.observe(1.1, {seen("b0", at(0, 0, 0.0039)), seen("b1", at(0, 0.08, 0.0039), false),
+                           seen("striker", at(0, -0.1, -0.5), false)});
   ASSERT_EQ(fell.size(), 1u) << "the thrown brick itself is never judged";
+  EXPECT_EQ(fell[0]->id, "b1");
+  EXPECT_EQ(fell[0]->fate, BrickFate::kFallen);
   EXPECT_TRUE(fell[0]->fell_after_throw);
   const BuildSummary summary = ledger.summary();
-  EXPECT_EQ(summary.placed, 2);
+  EXPECT_EQ(summary.placed, 3);
+  EXPECT_EQ(summary.standing, 1);
   EXPECT_EQ(summary.knocked, 1);
   EXPECT_EQ(summary.fallen, 0);
   EXPECT_EQ(summary.thrown, 1);
   std::string verdict;
   EXPECT_TRUE(ledger.met(ExpectedOutcome::kStands, &verdict)) << verdict;
+}
+
+TEST(BuildLedger, APlankAThrowSlidesAlongItsLayerStandsShiftedNotKnocked) {
+  // impact_layer3: a plank of layer 3 struck at 3 m/s slides 11 mm along its
+  // layer, still resting on layer 2 at its height: it never left the tower.
+  BuildLedger ledger;
+  ledger.recordPlaced("b4", at(0, 0, 0.0195), 0.0, false);
+  ledger.observe(0.1, {seen("b4", at(0, 0, 0.0195))});
+  ledger.recordPlaced("striker", at(0, -0.2, 0.0195), 1.0, true);
+  const auto changed = ledger.observe(1.1, {seen("b4", at(0, 0.011, 0.0195, 0.02), false)});
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_EQ(changed[0]->fate, BrickFate::kStanding);
+  EXPECT_TRUE(changed[0]->shifted);
+  EXPECT_NE(changed[0]->how.find("moved 11.0 mm"), std::string::npos) << changed[0]->how;
+  EXPECT_TRUE(ledger.observe(1.2, {seen("b4", at(0, 0.011, 0.0195, 0.02))}).empty())
+      << "a shift is told once";
+  BuildSummary summary = ledger.summary();
+  EXPECT_EQ(summary.knocked, 0);
+  EXPECT_EQ(summary.standing, 1);
+  EXPECT_EQ(summary.shifted, 1);
+  EXPECT_NE(formatSummary("s", summary, 2.0).find("standing 1 (1 shifted), fallen 0, knocked 0"),
+            std::string::npos)
+      << formatSummary("s", summary, 2.0);
+  std::string verdict;
+  EXPECT_TRUE(ledger.met(ExpectedOutcome::kStands, &verdict)) << verdict;
+  // If it later drops off its layer (by more than fall_distance), it is knocked.
+  const auto fell = ledger.observe(1.5, {seen("b4", at(0, 0.06, 0.0117), false)});
+  ASSERT_EQ(fell.size(), 1u);
+  EXPECT_EQ(fell[0]->fate, BrickFate::kFallen);
+  summary = ledger.summary();
+  EXPECT_EQ(summary.knocked, 1);
+  EXPECT_EQ(summary.shifted, 0);
+}
+
+TEST(BuildLedger, TheSameSlideWithoutAThrowIsAFall) {
+  BuildLedger ledger;
+  ledger.recordPlaced("b4", at(0, 0, 0.0195), 0.0, false);
+  ledger.observe(0.1, {seen("b4", at(0, 0, 0.0195))});
+  const auto fell = ledger.observe(1.1, {seen("b4", at(0, 0.011, 0.0195), false)});
+  ASSERT_EQ(fell.size(), 1u);
+  EXPECT_EQ(fell[0]->fate, BrickFate::kFallen);
+  EXPECT_FALSE(fell[0]->fell_after_throw);
+  EXPECT_EQ(ledger.summary().fallen, 1);
+}
+
+TEST(BuildLedger, LeaningAndStableFrozenBricksAreCountedApart) {
+  // A V of two leaning planks with a level plank across its apex.
+  BuildLedger ledger;
+  ledger.recordPlaced("left", at(-0.02, 0, 0.055), 0.0, false);
+  ledger.recordPlaced("right", at(0.02, 0, 0.055), 0.0, false);
+  ledger.recordPlaced("top", at(0, 0, 0.115), 1.0, false);
+  ObservedBrick left = seen("left", at(-0.02, 0, 0.055));
+  ObservedBrick right = seen("right", at(0.02, 0, 0.055));
+  left.leaning = right.leaning = true;
+  ledger.observe(1.5, {left, right, seen("top", at(0, 0, 0.115))});
+  const BuildSummary summary = ledger.summary();
+  EXPECT_EQ(summary.standing, 3);
+  EXPECT_EQ(summary.frozen, 3);
+  EXPECT_EQ(summary.leaning, 2);
+  EXPECT_NE(formatSummary("v", summary, 2.0).find("frozen 3 (stable 1, leaning 2)"),
+            std::string::npos)
+      << formatSummary("v", summary, 2.0);
 }
 
 TEST(BuildLedger, RemovedFellOffRefusedAndNeverRestedAreAccountedFor) {
@@ -138,7 +206,7 @@ TEST(BuildLedger, RemovedFellOffRefusedAndNeverRestedAreAccountedFor) {
                                 summary.unsettled + summary.thrown);
   EXPECT_EQ(formatSummary("s", summary, 1.0),
             "demo summary: scene s, placed 3, standing 0, fallen 2, knocked 0, unsettled 1, "
-            "refused 1, thrown 0, stable (frozen) 0, t=1.0 s");
+            "refused 1, thrown 0, frozen 0 (stable 0, leaning 0), t=1.0 s");
 }
 
 TEST(BuildLedger, ARefusedOrRestlessBrickFailsABuildThatShouldStand) {

@@ -21,6 +21,7 @@ struct ObservedBrick {
   Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
   bool frozen = false;    ///< STABLE or LEANING: the stability layer holds it.
+  bool leaning = false;   ///< LEANING: frozen, held by friction and side contacts.
   bool asleep = false;    ///< Bullet has deactivated it.
   bool fell_off = false;  ///< Dropped off the table.
 };
@@ -43,6 +44,16 @@ struct LedgerOptions {
 };
 
 /// How a placed brick stands at the last observation.
+///
+/// After a brick has been thrown, a brick of the structure that moves more
+/// than `fall_distance` (or turns more than `fall_angle`) from where it had
+/// come to rest has been knocked (kFallen with `fell_after_throw`) only when
+/// it left the structure: it fell off the table, was removed, or its centre
+/// is more than `fall_distance` lower than where it had come to rest (it no
+/// longer rests on what it was placed on). One that moved without dropping,
+/// such as a plank slid 11 mm along its layer by the blow, still stands in
+/// the structure: kStanding with `shifted` (docs/ros_interface.md,
+/// "blueprint_builder"). Before any throw, such a move is a fall.
 enum class BrickFate { kUnsettled, kStanding, kFallen, kThrown };
 
 /// One brick the builder placed (a thrown brick is not part of the structure).
@@ -55,18 +66,22 @@ struct LedgerEntry {
   std::optional<Eigen::Isometry3d> settled_pose;  ///< Where it first came to rest.
   std::optional<Eigen::Isometry3d> last_pose;     ///< At the previous observation.
   bool frozen = false;                            ///< At the last observation.
+  bool leaning = false;                           ///< Frozen and LEANING, at the last one.
+  bool shifted = false;  ///< Standing, but moved in place by a throw (see BrickFate).
   BrickFate fate = BrickFate::kUnsettled;
   double fell_at = 0.0;           ///< Sim time it was first seen fallen [s].
   int placed_when_fell = 0;       ///< Bricks placed by then (all, thrown included).
   bool fell_after_throw = false;  ///< Knocked: a brick had been thrown before it fell.
-  std::string how;                ///< Why it counts as fallen, in words.
+  std::string how;                ///< Why it counts as fallen or shifted, in words.
 };
 
 /// The ledger's account, counted over every brick placed.
 struct BuildSummary {
   int placed = 0, standing = 0, fallen = 0, knocked = 0, unsettled = 0, thrown = 0;
   int refused = 0;
-  int frozen = 0;  ///< Standing bricks the stability layer holds (0 in mode none).
+  int frozen = 0;   ///< Standing bricks the stability layer holds (0 in mode none).
+  int leaning = 0;  ///< Of those frozen, the LEANING ones; the rest are STABLE.
+  int shifted = 0;  ///< Of those standing, the ones a throw moved in place.
 };
 
 class BuildLedger {
@@ -83,7 +98,8 @@ class BuildLedger {
 
   /// Takes in every brick the simulator reports at sim time `t` [s]; a placed
   /// brick missing from `bricks` has been removed, which counts as fallen.
-  /// Returns the entries that fell at this observation, in placement order.
+  /// Returns the entries that fell, or were shifted in place by a throw, at
+  /// this observation, in placement order (see BrickFate).
   std::vector<const LedgerEntry*> observe(double t, const std::vector<ObservedBrick>& bricks);
 
   const LedgerEntry* find(const std::string& id) const;
@@ -101,6 +117,14 @@ class BuildLedger {
 
  private:
   LedgerEntry* findMutable(const std::string& id);
+  /// Whether a brick not yet at rest has come to rest where it was placed
+  /// (then standing); returns why it counts as fallen, or "".
+  std::string judgeResting(LedgerEntry* entry, const ObservedBrick& brick) const;
+  /// Whether a brick that had come to rest has fallen since, returning why
+  /// in words, or ""; after a throw a move in place sets `shifted` instead
+  /// (and `*shifted_now` the first time).
+  std::string judgeSettled(LedgerEntry* entry, const Eigen::Isometry3d& pose,
+                           bool* shifted_now) const;
 
   LedgerOptions options_;
   std::vector<LedgerEntry> entries_;
@@ -111,7 +135,8 @@ class BuildLedger {
 
 /// The one-line summary a demo prints last: "demo summary: scene <name>,
 /// placed N, standing N, fallen N, knocked N, unsettled N, refused N,
-/// thrown N, stable (frozen) N, t=T s".
+/// thrown N, frozen N (stable N, leaning N), t=T s", with " (N shifted)"
+/// after standing's count when a throw shifted bricks in place.
 std::string formatSummary(const std::string& scene, const BuildSummary& summary, double t);
 
 }  // namespace planner

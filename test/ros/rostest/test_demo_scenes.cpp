@@ -164,6 +164,11 @@ TEST_F(DemoScenes, AHardHitAtLayerThreeSlidesTheStruckPlankAndTheTowerStands) {
   const BuildOutcome outcome = build("impact_layer3", &scene);
   if (!asserting()) return;
   EXPECT_TRUE(outcome.met) << outcome.verdict;
+  // The struck plank carries ten layers: had it left the tower, what it
+  // carries would have come down with it. It slides on its layer, so the
+  // ledger must not count it knocked out (docs/ros_interface.md,
+  // "blueprint_builder").
+  EXPECT_EQ(outcome.summary.knocked, 0) << outcome.summary_line;
   const std::string struck = towerBrick(3);
   for (const auto& [id, moved] : displacements(scene)) {
     if (id == kStrikerId) continue;

@@ -137,6 +137,55 @@ TEST(FromXmlRpc, DeepNestingIsRefused) {
   EXPECT_NE(refused(deep, "~").find("is nested more than 100 levels deep"), std::string::npos);
 }
 
+/// A map {key: value}, as the node's private namespace would hold it.
+PV withMember(const std::string& key, PV value) {
+  PV map = PV::makeMap();
+  map.set(key, std::move(value));
+  return map;
+}
+
+TEST(ListFromString, ARosrunListStringIsReadAsTheList) {
+  // `rosrun ... _scene_dirs:=[/a, /b]` stores the text "[/a, /b]".
+  PV parameters = withMember("scene_dirs", PV::makeString("[/a, /b]"));
+  std::string note;
+  const Status status = listFromString("scene_dirs", &parameters, &note);
+  ASSERT_TRUE(status.ok) << status.message;
+  EXPECT_EQ(*parameters.find("scene_dirs"),
+            PV::makeList({PV::makeString("/a"), PV::makeString("/b")}));
+  EXPECT_NE(note.find("read as the list ['/a', '/b']"), std::string::npos) << note;
+  // The core's reader now takes it as any list of strings.
+  std::vector<std::string> dirs;
+  OptionsReader reader(parameters);
+  reader.read("scene_dirs", &dirs);
+  EXPECT_EQ(dirs, (std::vector<std::string>{"/a", "/b"}));
+}
+
+TEST(ListFromString, AnyOtherStringIsAListOfOne) {
+  PV parameters = withMember("scene_dirs", PV::makeString("/my scenes"));
+  ASSERT_TRUE(listFromString("scene_dirs", &parameters).ok);
+  EXPECT_EQ(*parameters.find("scene_dirs"), PV::makeList({PV::makeString("/my scenes")}));
+}
+
+TEST(ListFromString, AListOrAnAbsentKeyIsLeftAlone) {
+  const PV list = withMember("scene_dirs", PV::makeList({PV::makeString("/a")}));
+  PV parameters = list;
+  std::string note;
+  ASSERT_TRUE(listFromString("scene_dirs", &parameters, &note).ok);
+  EXPECT_EQ(parameters, list);
+  EXPECT_TRUE(note.empty());
+  PV other = withMember("scene", PV::makeString("[x]"));
+  ASSERT_TRUE(listFromString("scene_dirs", &other).ok);
+  EXPECT_EQ(*other.find("scene"), PV::makeString("[x]"));
+}
+
+TEST(ListFromString, ABracketThatIsNoListOfStringsIsRefusedSayingHowToSetIt) {
+  PV parameters = withMember("scene_dirs", PV::makeString("[[a], b"));
+  const Status status = listFromString("scene_dirs", &parameters);
+  EXPECT_FALSE(status.ok);
+  EXPECT_NE(status.message.find("~scene_dirs"), std::string::npos) << status.message;
+  EXPECT_NE(status.message.find("rosparam set"), std::string::npos) << status.message;
+}
+
 }  // namespace
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim
