@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Writes docs/images/placer.png, the README's picture of the brick placer:
 # teleop.launch on the tower10 scene under Xvfb with Mesa's software GL, the
-# ghost brick over the tower, captured with ImageMagick once RViz has drawn
+# ghost brick beside the tower, captured with ImageMagick once RViz has drawn
 # it. Its own ROS master port and X display keep it off anything running.
 # Usage: bash scripts/screenshot_placer.sh [output.png]
 set -eo pipefail
@@ -14,10 +14,9 @@ mkdir -p "$(dirname "${output}")"
 # shellcheck source=scripts/screenshot_session.sh
 source "${repo_root}/scripts/screenshot_session.sh" 11431
 
-# The tower is 10 layers (7.8 cm); the ghost hovers 7 cm above it where the
-# next layer's first brick goes (along x, over one side).
-roslaunch brick_stack_sim teleop.launch scene:=tower10 \
-  initial_position:="[0.0, -0.0468, 0.15]" initial_yaw:=0.0 output:=log >/dev/null 2>&1 &
+# The tower is 10 layers (7.8 cm); the ghost starts where teleop.launch puts
+# it by default: on the table top beside the tower, hiding none of it.
+roslaunch brick_stack_sim teleop.launch scene:=tower10 output:=log >/dev/null 2>&1 &
 pids+=($!)
 
 # RViz is ready when it listens to the placer; software GL then needs a few

@@ -3,11 +3,13 @@
 #include <cmath>
 #include <cstdarg>
 
+#include <ros/console.h>
 #include <ros/time.h>
 
 #include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/conversions.h"
+#include "brick_stack_sim/ros/xmlrpc_parameters.h"
 
 namespace brick_stack_sim {
 namespace planner {
@@ -32,6 +34,7 @@ ObservedBrick toObserved(const Brick& msg) {
   ros_adapter::fromMsg(msg.pose, "pose", &brick.pose);
   ros_adapter::fromMsg(msg.twist, "twist", &brick.linear_velocity, &brick.angular_velocity);
   brick.frozen = msg.state == Brick::STABLE || msg.state == Brick::LEANING;
+  brick.leaning = msg.state == Brick::LEANING;
   brick.asleep = msg.asleep;
   brick.fell_off = msg.fell_off;
   return brick;
@@ -66,10 +69,17 @@ Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& 
   if (read.scene.empty()) return Status::error("parameter ~scene is empty: name a scene or a path");
   private_nh.param("sim", read.sim, read.sim);
   if (read.sim.empty()) return Status::error("parameter ~sim is empty: the simulator's namespace");
+  private_nh.param("label", read.label, read.label);
   DataOptions data;  // unset or empty: the package's own
   private_nh.param("types_urdf", data.types_urdf, data.types_urdf);
   private_nh.param("materials_yaml", data.materials_yaml, data.materials_yaml);
-  private_nh.param("scene_dirs", data.scene_dirs, data.scene_dirs);
+  // A list given on a rosrun line arrives as a string: read it as one.
+  std::string list_note;
+  if (Status listed =
+          ros_adapter::readStringList(private_nh, "scene_dirs", &data.scene_dirs, &list_note);
+      !listed)
+    return listed;
+  if (!list_note.empty()) ROS_INFO("%s", list_note.c_str());
   fillPackageData(package_dir, &data);
   read.types_urdf = data.types_urdf;
   read.materials_yaml = data.materials_yaml;
@@ -85,6 +95,10 @@ Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& 
   }
   *options = read;
   return Status::success();
+}
+
+std::string linePrefix(const BuilderOptions& options) {
+  return options.label.empty() ? std::string() : "[" + options.label + "] ";
 }
 
 BlueprintBuilder::BlueprintBuilder(ros::NodeHandle nh, BuilderOptions options, std::FILE* progress)
@@ -104,7 +118,7 @@ Status BlueprintBuilder::loadScene(Scene* scene) const {
 double BlueprintBuilder::clock(const ros::Time& t) const { return (t - epoch_).toSec(); }
 
 void BlueprintBuilder::say(const char* format, ...) const {
-  std::fprintf(progress_, "[t=%6.2f s] ", clock(ros::Time::now()));
+  std::fprintf(progress_, "%s[t=%6.2f s] ", linePrefix(options_).c_str(), clock(ros::Time::now()));
   va_list arguments;
   va_start(arguments, format);
   std::vfprintf(progress_, format, arguments);
@@ -207,9 +221,12 @@ Status BlueprintBuilder::observe() {
   observed.reserve(get.response.bricks.size());
   for (const Brick& brick : get.response.bricks) observed.push_back(toObserved(brick));
   const double t = clock(get.response.header.stamp);
-  for (const LedgerEntry* fell : ledger_.observe(t, observed))
-    say("%s %s: %s", fell->id.c_str(), fell->fell_after_throw ? "was knocked" : "FELL",
-        fell->how.c_str());
+  for (const LedgerEntry* changed : ledger_.observe(t, observed)) {
+    const char* what = changed->fate != BrickFate::kFallen ? "was shifted"
+                       : changed->fell_after_throw         ? "was knocked"
+                                                           : "FELL";
+    say("%s %s: %s", changed->id.c_str(), what, changed->how.c_str());
+  }
   next_observation_ = ros::Time::now() + ros::Duration(options_.poll_period);
   return Status::success();
 }

@@ -164,28 +164,48 @@ std::vector<LegendEntry> legendEntries() {
   return entries;
 }
 
+double legendScale(const TableOptions& table, const LegendStyle& style) {
+  const double own = std::isfinite(style.scale) && style.scale > 0.0 ? style.scale : 1.0;
+  return own * table.size.norm() / kLegendReferenceTableDiagonal;
+}
+
 visualization_msgs::MarkerArray makeLegendMarkers(const TableOptions& table,
                                                   const std::string& frame_id,
-                                                  const ros::Time& stamp) {
+                                                  const ros::Time& stamp,
+                                                  const LegendStyle& style) {
   using visualization_msgs::Marker;
   visualization_msgs::MarkerArray array;
   if (!table.size.allFinite() || !(table.size.minCoeff() > 0.0)) return array;
+  const double scale = legendScale(table, style);
   // Over the table, back right of the default view (config/demo.rviz looks
   // along +y, slightly toward -x): beside a tower or a card house at the
   // centre, in front of nothing. A small table pulls it in to its corner.
-  const double x = std::min(kLegendOffsetX, 0.5 * table.size.x());
-  const double y = std::min(kLegendOffsetY, 0.5 * table.size.y());
+  const double x = std::min(scale * kLegendOffsetX, 0.5 * table.size.x());
+  const double y = std::min(scale * kLegendOffsetY, 0.5 * table.size.y());
+  const double top = scale * kLegendTop;
   const std::vector<LegendEntry> entries = legendEntries();
   for (std::size_t i = 0; i < entries.size(); ++i) {
     Marker line = newMarker(frame_id, stamp, kLegendMarkerNamespace, static_cast<int>(i),
                             Marker::TEXT_VIEW_FACING);
     line.pose.position.x = x;
     line.pose.position.y = y;
-    line.pose.position.z = kLegendTop - static_cast<double>(i) * kLegendLineSpacing;
-    line.scale.z = kLegendTextHeight;  // TEXT_VIEW_FACING: only z, the height of a capital
+    line.pose.position.z = top - static_cast<double>(i) * scale * kLegendLineSpacing;
+    // TEXT_VIEW_FACING: only z, the height of a capital
+    line.scale.z = scale * kLegendTextHeight;
     line.text = entries[i].text;
     line.color = entries[i].color;
     array.markers.push_back(line);
+  }
+  if (!style.title.empty()) {
+    // Over the centre, where the structure stands: the title names the
+    // table, and in a view of two tables it stands over its own.
+    Marker title = newMarker(frame_id, stamp, kLegendMarkerNamespace, kLegendTitleMarkerId,
+                             Marker::TEXT_VIEW_FACING);
+    title.pose.position.z = top + scale * kLegendTitleHeight;
+    title.scale.z = scale * kLegendTitleHeight;
+    title.text = style.title;
+    title.color = rgb(1.0f, 1.0f, 1.0f);
+    array.markers.push_back(title);
   }
   return array;
 }

@@ -52,7 +52,7 @@ visualization_msgs::MarkerArray MarkerUpdates::full(const BrickMirror& mirror,
   shown_.clear();
   edge_groups_shown_.clear();
   // makeMarkers() of no bricks: the DELETEALL, the table and the legend.
-  visualization_msgs::MarkerArray array = makeMarkers({}, {}, table, frame_id_, stamp);
+  visualization_msgs::MarkerArray array = makeMarkers({}, {}, table, frame_id_, stamp, legend_);
   for (const MirroredBrick& brick : mirror.bricks()) appendBrick(brick, stamp, &array);
   for (const MirroredBrick& brick : mirror.bricks()) {
     const int id = edgeMarkerId(brick.snapshot);

@@ -25,11 +25,12 @@ using visualization_msgs::Marker;
 /// Translucent, so that the bricks under the ghost stay visible, but opaque
 /// enough to stand out from the translucent bricks of the simulator's markers.
 constexpr float kGhostAlpha = 0.75f;
-/// Handle rings this much larger than the brick's longest side [-]: clear of
-/// the box so that they can be grabbed, small enough not to hide a tower.
-constexpr double kHandleScale = 1.1;
+/// The handles' size over the brick's longest side [-]: RViz draws a rotate
+/// ring from half this size outward, so at 1 its inside just clears the
+/// brick's ends, where it can be grabbed, and it is no larger than that.
+constexpr double kHandleScale = 1.0;
 /// Smallest handle size [m]: a cube's handles would be too small to grab.
-constexpr double kMinHandleSize = 0.06;
+constexpr double kMinHandleSize = 0.05;
 
 std::string describe(const Eigen::Vector3d& position) {
   char text[96];
@@ -73,7 +74,44 @@ BrickPlacer::BrickPlacer(const PlacerOptions& options, const BrickTypeLibrary& t
            (ros::this_node::getName() + "/update").c_str());
 }
 
-void BrickPlacer::waitForSimulator() { sim_.waitForSimulator(options_.teleop.wait_for_sim); }
+void BrickPlacer::waitForSimulator() {
+  if (!sim_.waitForSimulator(options_.teleop.wait_for_sim) || !options_.start_beside) return;
+  std::vector<OrientedBox> boxes;
+  if (!brickBoxes(&boxes) || boxes.empty()) return;
+  // Beside the structure, on the table: the ghost and its rings hide none
+  // of it. The half extents of the ghost's box as turned, seen along x, y, z.
+  const OrientedBox turned{Eigen::Isometry3d(ghost_pose_.linear()),
+                           types_.find(type_)->halfExtents()};
+  ghost_pose_.translation() =
+      besideBricks(boxes, bounds(turned).max(), options_.teleop.initial_position);
+  server_.setPose(kGhostMarker, ros_adapter::toPoseMsg(ghost_pose_));
+  server_.applyChanges();
+  ROS_INFO("brick_placer: ghost moved beside the %zu bricks, to %s", boxes.size(),
+           describe(ghost_pose_.translation()).c_str());
+}
+
+bool BrickPlacer::brickBoxes(std::vector<OrientedBox>* boxes) {
+  std::vector<Brick> bricks;
+  if (!sim_.getBricks(&bricks)) return false;
+  boxes->clear();
+  for (const Brick& brick : bricks) {
+    OrientedBox box;
+    // The simulator publishes nothing non-finite; a brick that fails the
+    // check anyway is left out rather than trusted.
+    if (!ros_adapter::fromMsg(brick.pose, "brick pose", &box.pose)) continue;
+    box.half_extents = 0.5 * Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
+    if (!box.half_extents.allFinite()) continue;
+    boxes->push_back(box);
+  }
+  return true;
+}
+
+bool BrickPlacer::keepAboveTable(const Eigen::Vector3d& half_extents, Eigen::Isometry3d* pose) {
+  const double lowest = lowestCentreZ(half_extents, pose->linear());
+  if (pose->translation().z() >= lowest) return false;
+  pose->translation().z() = lowest;
+  return true;
+}
 
 void BrickPlacer::buildMenu() {
   menu_.insert(kPlaceHereEntry, [this](const FeedbackConstPtr& f) { placeHere(f); });
@@ -154,8 +192,14 @@ bool BrickPlacer::takeFeedbackPose(const FeedbackConstPtr& feedback) {
 }
 
 void BrickPlacer::onPoseUpdate(const FeedbackConstPtr& feedback) {
-  if (!takeFeedbackPose(feedback)) return;
-  if (sim_.held()) sim_.publishHeldTarget(ros_adapter::toPoseMsg(ghost_pose_));
+  if (!takeFeedbackPose(feedback) || !sim_.held()) return;
+  // The held brick's target stays above the table (the simulator would
+  // refuse it); the ghost shows where the target is.
+  if (keepAboveTable(0.5 * held_size_, &ghost_pose_)) {
+    server_.setPose(kGhostMarker, ros_adapter::toPoseMsg(ghost_pose_));
+    server_.applyChanges();
+  }
+  sim_.publishHeldTarget(ros_adapter::toPoseMsg(ghost_pose_));
 }
 
 bool BrickPlacer::holding() {
@@ -180,25 +224,17 @@ void BrickPlacer::place(const Eigen::Isometry3d& pose, const char* action) {
 
 void BrickPlacer::placeHere(const FeedbackConstPtr& feedback) {
   if (!readyToPlace(kPlaceHereEntry) || !takeFeedbackPose(feedback)) return;
-  std::vector<Brick> bricks;
-  if (!sim_.getBricks(&bricks)) return;
   std::vector<OrientedBox> boxes;
-  for (const Brick& brick : bricks) {
-    OrientedBox box;
-    // The simulator publishes nothing non-finite; a brick that fails the
-    // check anyway is left out rather than trusted.
-    if (!ros_adapter::fromMsg(brick.pose, "brick pose", &box.pose)) continue;
-    box.half_extents = 0.5 * Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
-    if (!box.half_extents.allFinite()) continue;
-    boxes.push_back(box);
-  }
+  if (!brickBoxes(&boxes)) return;
   const OrientedBox ghost{ghost_pose_, types_.find(type_)->halfExtents()};
   place(restingPose(ghost, boxes), kPlaceHereEntry);
 }
 
 void BrickPlacer::dropFromHere(const FeedbackConstPtr& feedback) {
   if (!readyToPlace(kDropFromHereEntry) || !takeFeedbackPose(feedback)) return;
-  place(ghost_pose_, kDropFromHereEntry);
+  Eigen::Isometry3d pose = ghost_pose_;
+  keepAboveTable(types_.find(type_)->halfExtents(), &pose);
+  place(pose, kDropFromHereEntry);
 }
 
 void BrickPlacer::turn(const FeedbackConstPtr& feedback) {

@@ -67,6 +67,11 @@ std::string keyMapText() {
   return text.str();
 }
 
+double cursorFloor(const Cursor& cursor, const Eigen::Vector3d& half_extents) {
+  if (!half_extents.allFinite()) return kTableTop;
+  return lowestCentreZ(half_extents, cursor.orientation.normalized().toRotationMatrix());
+}
+
 Cursor moveCursor(const Cursor& cursor, const KeyCommand& command, const CursorSteps& steps) {
   Cursor moved = cursor;
   switch (command.action) {

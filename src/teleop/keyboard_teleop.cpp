@@ -1,5 +1,6 @@
 #include "brick_stack_sim/teleop/keyboard_teleop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -17,9 +18,13 @@ namespace {
 /// How often the loop looks for a key and for ROS callbacks [s]: keys feel
 /// immediate and a shutdown is noticed at once.
 constexpr double kKeyPollPeriod = 0.02;
-/// The cursor arrow's length [m]: about half a KAPLA, so that it shows the
-/// heading without hiding the brick under it.
-constexpr double kArrowLength = 0.06;
+/// The cursor arrow's length [m] with nothing held: a KAPLA's length, so
+/// that it reads from config/teleop.rviz's default view as a brick does.
+/// While a brick is held, the arrow is as long as that brick's longest side.
+constexpr double kArrowLength = 0.117;
+/// The arrow's thickness over its length [-]: half a KAPLA's width at a
+/// KAPLA's length, a shaft that shows from the default view.
+constexpr double kArrowThickness = 0.1;
 
 geometry_msgs::Pose toPose(const Cursor& cursor) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -76,10 +81,15 @@ void KeyboardTeleop::handle(const KeyCommand& command) {
       release();
       break;
     case KeyAction::kMove:
-    case KeyAction::kTurn:
-      cursor_ = moveCursor(cursor_, command, options_.steps);
+    case KeyAction::kTurn: {
+      CursorSteps steps = options_.steps;
+      steps.min_z = std::max(
+          steps.min_z,
+          cursorFloor(cursor_, sim_.held() ? held_half_extents_ : Eigen::Vector3d::Zero()));
+      cursor_ = moveCursor(cursor_, command, steps);
       publishCursor();
       break;
+    }
   }
   printCursor();
 }
@@ -101,6 +111,8 @@ void KeyboardTeleop::grasp() {
     cursor_.position = pose.translation();
     cursor_.orientation = Eigen::Quaterniond(pose.linear()).normalized();
   }
+  held_half_extents_ = 0.5 * Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
+  if (!held_half_extents_.allFinite()) held_half_extents_.setZero();
   publishCursor();
   std::printf("holding %s\n", brick.id.c_str());
 }
@@ -117,20 +129,25 @@ void KeyboardTeleop::release() {
 
 void KeyboardTeleop::publishCursor() {
   const geometry_msgs::Pose pose = toPose(cursor_);
+  const bool holding = sim_.held().has_value();
+  const double length = holding && held_half_extents_.maxCoeff() > 0.0
+                            ? 2.0 * held_half_extents_.maxCoeff()
+                            : kArrowLength;
   visualization_msgs::Marker arrow;
   arrow.header.frame_id = kWorldFrame;
   arrow.header.stamp = ros::Time::now();
   arrow.ns = "cursor";
+  arrow.id = 0;
   arrow.type = visualization_msgs::Marker::ARROW;
   arrow.pose = pose;
-  arrow.scale.x = kArrowLength;
-  arrow.scale.y = 0.006;
-  arrow.scale.z = 0.006;
-  // Green while free, orange while a brick follows it.
-  const bool holding = sim_.held().has_value();
-  arrow.color.r = holding ? 1.0f : 0.2f;
-  arrow.color.g = holding ? 0.55f : 0.9f;
-  arrow.color.b = holding ? 0.1f : 0.2f;
+  arrow.scale.x = length;
+  arrow.scale.y = kArrowThickness * length;
+  arrow.scale.z = kArrowThickness * length;
+  // Yellow while free, cyan while a brick follows it: neither is a brick's
+  // tint nor a ray's green.
+  arrow.color.r = holding ? 0.0f : 1.0f;
+  arrow.color.g = holding ? 0.85f : 0.9f;
+  arrow.color.b = holding ? 1.0f : 0.0f;
   arrow.color.a = 1.0f;
   cursor_marker_.publish(arrow);
   if (holding) sim_.publishHeldTarget(pose);

@@ -42,6 +42,24 @@ Eigen::Isometry3d restingPose(const OrientedBox& ghost, const std::vector<Orient
   return pose;
 }
 
+double lowestCentreZ(const Eigen::Vector3d& half_extents, const Eigen::Matrix3d& rotation) {
+  // The box's extent along world z: each of its axes' z component times its
+  // half extent.
+  return kTableTop + rotation.row(2).cwiseAbs().dot(half_extents.cwiseAbs());
+}
+
+Eigen::Vector3d besideBricks(const std::vector<OrientedBox>& bricks,
+                             const Eigen::Vector3d& half_extents, const Eigen::Vector3d& fallback) {
+  Eigen::AlignedBox3d around;
+  for (const OrientedBox& brick : bricks)
+    if (brick.pose.matrix().allFinite() && brick.half_extents.allFinite())
+      around.extend(bounds(brick));
+  if (around.isEmpty()) return fallback;
+  const Eigen::Vector3d half = half_extents.cwiseAbs();
+  return Eigen::Vector3d(around.max().x() + half.x() + half.maxCoeff(),
+                         0.5 * (around.min().y() + around.max().y()), kTableTop + half.z());
+}
+
 int nearestIndex(const Eigen::Vector3d& point, const std::vector<Eigen::Vector3d>& centres) {
   int nearest = -1;
   double nearest_distance = std::numeric_limits<double>::infinity();

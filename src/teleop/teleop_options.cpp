@@ -60,6 +60,7 @@ Status loadPlacerOptions(const ParameterValue& parameters, PlacerOptions* option
   OptionsReader reader(parameters);
   return prefixed("parameter ~", readAndValidate(reader, true, options, [&](PlacerOptions& o) {
                     readTeleopKeys(reader, &o.teleop);
+                    o.start_beside = parameters.find("initial_position") == nullptr;
                     reader.read("type", &o.type);
                     reader.read("types_urdf", &o.types_urdf);
                     reader.read("materials_yaml", &o.materials_yaml);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/teleop/keyboard_command.h"
+#include "support/kapla.h"
 
 namespace {
 
@@ -87,6 +88,55 @@ TEST(Cursor, NeverBelowTheTable) {
   const Cursor down = press(startCursor(), "ffff", steps);
   EXPECT_EQ(down.position.z(), 0.0);
   EXPECT_NEAR(press(down, "r", steps).position.z(), 0.02, 1e-12);
+}
+
+/// Keys pressed as keyboard_teleop presses them while it holds a brick of
+/// `half_extents`: each move's floor is cursorFloor() of the cursor then.
+Cursor pressHolding(Cursor cursor, const std::string& keys, const Eigen::Vector3d& half_extents,
+                    CursorSteps steps) {
+  for (char key : keys) {
+    steps.min_z = cursorFloor(cursor, half_extents);
+    cursor = moveCursor(cursor, commandForKey(key), steps);
+  }
+  return cursor;
+}
+
+TEST(Cursor, HoldingABrickItStopsWhereTheBrickRestsOnTheTable) {
+  using brick_stack_sim::test::kKaplaLength;
+  using brick_stack_sim::test::kKaplaThickness;
+  using brick_stack_sim::test::kKaplaWidth;
+  const Eigen::Vector3d half = 0.5 * Eigen::Vector3d(kKaplaLength, kKaplaWidth, kKaplaThickness);
+  CursorSteps steps;
+  steps.linear = 0.007;  // not a divisor of the height: the last step is cut short
+  // Flat: the centre stops half a plank's thickness above the table top,
+  // so the plank's underside lies on it.
+  const Cursor flat = pressHolding(startCursor(), std::string(20, 'f'), half, steps);
+  EXPECT_NEAR(flat.position.z(), 0.5 * kKaplaThickness, 1e-12);
+  EXPECT_NEAR(flat.position.z() - half.z(), kTableTop, 1e-12);
+  // Turning about z keeps it there; moving sideways too.
+  EXPECT_NEAR(pressHolding(flat, "qqwad", half, steps).position.z(), 0.5 * kKaplaThickness, 1e-12);
+  // On its edge (turned 90 degrees about x): half its width.
+  Cursor edge = startCursor();
+  edge.orientation = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX());
+  EXPECT_NEAR(pressHolding(edge, std::string(20, 'f'), half, steps).position.z(), 0.5 * kKaplaWidth,
+              1e-12);
+  // On its end (turned 90 degrees about y), from higher up: half its length.
+  Cursor end = startCursor();
+  end.position.z() = 0.2;
+  end.orientation = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY());
+  EXPECT_NEAR(pressHolding(end, std::string(60, 'f'), half, steps).position.z(), 0.5 * kKaplaLength,
+              1e-12);
+  // Tilted 30 degrees about x: the lowest edge touches the table top.
+  Cursor tilted = startCursor();
+  tilted.orientation = Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitX());
+  EXPECT_NEAR(pressHolding(tilted, std::string(20, 'f'), half, steps).position.z(),
+              half.y() * std::sin(M_PI / 6) + half.z() * std::cos(M_PI / 6), 1e-12);
+  // Nothing held (zero or unknown half extents): the cursor's point itself
+  // stops at the table top.
+  EXPECT_EQ(pressHolding(startCursor(), std::string(20, 'f'), Eigen::Vector3d::Zero(), steps)
+                .position.z(),
+            kTableTop);
+  EXPECT_EQ(cursorFloor(startCursor(), Eigen::Vector3d::Constant(std::nan(""))), kTableTop);
 }
 
 TEST(Cursor, TurnKeysTurnAboutWorldZ) {

@@ -1,5 +1,6 @@
 // "Place here" puts the ghost at rest on what is under its footprint, with
 // KAPLA's real size: the expected heights are sums of brick thicknesses.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -120,6 +121,58 @@ TEST(RestingPose, NonFiniteBricksAreIgnored) {
   const std::vector<OrientedBox> bricks = {kapla(0.0, 0.0, nan), kapla(nan, 0.0, 0.0039)};
   EXPECT_NEAR(restingPose(kapla(0.0, 0.0, 0.2), bricks).translation().z(), 0.5 * kKaplaThickness,
               1e-12);
+}
+
+TEST(LowestCentreZ, TheBoxsHalfHeightAboveTheTableTop) {
+  const Eigen::Matrix3d flat = Eigen::Matrix3d::Identity();
+  EXPECT_NEAR(lowestCentreZ(kKaplaHalf, flat), kTableTop + 0.5 * kKaplaThickness, 1e-15);
+  // Turning about z changes nothing; standing on its end, half its length.
+  EXPECT_NEAR(lowestCentreZ(kKaplaHalf,
+                            Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()).toRotationMatrix()),
+              0.5 * kKaplaThickness, 1e-15);
+  EXPECT_NEAR(
+      lowestCentreZ(kKaplaHalf,
+                    Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix()),
+      0.5 * kKaplaLength, 1e-15);
+  // At that height, a tilted box's lowest corner is on the table top.
+  const Eigen::Matrix3d tilted = (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()) *
+                                  Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()))
+                                     .toRotationMatrix();
+  OrientedBox b = kapla(0.0, 0.0, 0.0);
+  b.pose.linear() = tilted;
+  b.pose.translation().z() = lowestCentreZ(kKaplaHalf, tilted);
+  EXPECT_NEAR(bounds(b).min().z(), kTableTop, 1e-15);
+}
+
+TEST(BesideBricks, OnTheTableClearOfTheStructure) {
+  // A two-layer 4-stack around the origin.
+  const double offset = 0.5 * (kKaplaLength - kKaplaWidth);
+  const double z0 = 0.5 * kKaplaThickness;
+  const std::vector<OrientedBox> tower = {kapla(0.0, -offset, z0), kapla(0.0, offset, z0),
+                                          kapla(-offset, 0.0, z0 + kKaplaThickness, M_PI / 2),
+                                          kapla(offset, 0.0, z0 + kKaplaThickness, M_PI / 2)};
+  const Eigen::Vector3d fallback(0.0, 0.0, 0.1);
+  const Eigen::Vector3d start = besideBricks(tower, kKaplaHalf, fallback);
+  // Resting on the table top, centred on the tower in y.
+  EXPECT_NEAR(start.z(), kTableTop + 0.5 * kKaplaThickness, 1e-12);
+  EXPECT_NEAR(start.y(), 0.0, 1e-12);
+  // Its box clears the tower's footprint along x, on the +x side, by half its
+  // length: the handles' rings (as wide as its length) do not reach over it.
+  const OrientedBox ghost = kapla(start.x(), start.y(), start.z());
+  double tower_max_x = -1.0;
+  for (const OrientedBox& brick : tower)
+    tower_max_x = std::max(tower_max_x, bounds(brick).max().x());
+  EXPECT_NEAR(bounds(ghost).min().x() - tower_max_x, 0.5 * kKaplaLength, 1e-12);
+  // A tower off the centre moves the start with it.
+  std::vector<OrientedBox> moved = tower;
+  for (OrientedBox& brick : moved) brick.pose.translation() += Eigen::Vector3d(0.1, -0.2, 0.0);
+  EXPECT_TRUE(besideBricks(moved, kKaplaHalf, fallback)
+                  .isApprox(start + Eigen::Vector3d(0.1, -0.2, 0.0), 1e-12));
+  // No bricks, or none finite: the fallback.
+  EXPECT_EQ(besideBricks({}, kKaplaHalf, fallback), fallback);
+  OrientedBox broken = kapla(0.0, 0.0, z0);
+  broken.pose.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(besideBricks({broken}, kKaplaHalf, fallback), fallback);
 }
 
 TEST(NearestIndex, PicksTheNearestCentre) {

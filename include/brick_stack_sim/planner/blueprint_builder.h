@@ -27,6 +27,10 @@ struct BuilderOptions {
   std::string sim = ros_adapter::kDefaultNamespace;
   std::string types_urdf;  ///< Brick types; must be the simulator's.
   std::string materials_yaml;
+  /// Put in brackets at the start of every progress and summary line
+  /// ("[left com] placed b0 (1/50)"), so that two builders writing to one
+  /// console (compare.launch) can be told apart; empty: no tag.
+  std::string label;
   /// How long past its placement a brick may take to come to rest [s] (sim
   /// time) before the builder goes on without it and says so.
   double settle_timeout = 3.0;
@@ -43,6 +47,9 @@ struct BuilderOptions {
 /// message naming it and `*options` is left unchanged.
 Status readBuilderOptions(const ros::NodeHandle& private_nh, const std::string& package_dir,
                           BuilderOptions* options);
+
+/// "[<label>] " for a label, "" for none: what starts each line of output.
+std::string linePrefix(const BuilderOptions& options);
 
 /// What a build came to.
 struct BuildOutcome {

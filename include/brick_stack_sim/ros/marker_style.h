@@ -113,6 +113,22 @@ constexpr double kLegendLineSpacing = 1.5 * kLegendTextHeight;
 constexpr double kLegendOffsetX = 0.2;
 constexpr double kLegendOffsetY = 0.12;
 constexpr double kLegendTop = 0.37;
+/// Height of the title's letters [m] ("mode com", over the table's centre,
+/// one title height above the legend's first line): large enough to name a
+/// table from a view of two of them (config/compare.rviz).
+constexpr double kLegendTitleHeight = 0.04;
+/// The title's id in the legend namespace, clear of the lines' ids.
+constexpr int kLegendTitleMarkerId = 100;
+/// The diagonal of the table the sizes above are for (TableOptions' default,
+/// 1.2 m by 0.8 m) [m]: a larger table scales them up, a smaller one down.
+constexpr double kLegendReferenceTableDiagonal = 1.4422205101855958;
+
+/// What the legend shows beyond its lines, and how large: a title, and a
+/// scale on top of the table's (docs/ros_interface.md, "What you see in RViz").
+struct LegendStyle {
+  std::string title;   ///< Over the table's centre; empty: no title.
+  double scale = 1.0;  ///< Times every size and offset; not finite or <= 0: 1.
+};
 
 /// What a brick's colour shows, most telling first: a brick that fell off is
 /// shown as such whatever the simulator does with it, and Bullet's sleep is
@@ -170,15 +186,23 @@ struct LegendEntry {
 /// meshes, the arrows and the cones mean (each in its marker's colour), and
 /// how to see inside the stack.
 std::vector<LegendEntry> legendEntries();
+/// The factor on the legend's sizes and offsets: the table's diagonal over
+/// kLegendReferenceTableDiagonal, times `style.scale` (1 for a scale that
+/// is not finite or not positive).
+double legendScale(const TableOptions& table, const LegendStyle& style);
 /// legendEntries() as TEXT_VIEW_FACING markers (id = line number from 0),
 /// kLegendTextHeight tall, kLegendLineSpacing apart, in a column over the
 /// table at (kLegendOffsetX, kLegendOffsetY) [m] from its centre (at most
-/// its corner), from kLegendTop down, so that config/demo.rviz's default
-/// view shows it beside the bricks. Nothing for a table with a non-finite
-/// or non-positive size.
+/// its corner), from kLegendTop down, each size and offset times
+/// legendScale(), so that config/demo.rviz's default view shows it beside
+/// the bricks; and the style's title (id kLegendTitleMarkerId),
+/// kLegendTitleHeight tall (scaled too), over the table's centre one title
+/// height above the first line. Nothing for a table with a non-finite or
+/// non-positive size.
 visualization_msgs::MarkerArray makeLegendMarkers(const TableOptions& table,
                                                   const std::string& frame_id,
-                                                  const ros::Time& stamp);
+                                                  const ros::Time& stamp,
+                                                  const LegendStyle& style = LegendStyle());
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

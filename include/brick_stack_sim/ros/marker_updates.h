@@ -16,13 +16,16 @@
 
 #include "brick_stack_sim/core/types/world_options.h"
 #include "brick_stack_sim/ros/brick_mirror.h"
+#include "brick_stack_sim/ros/marker_style.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
 
 class MarkerUpdates {
  public:
-  explicit MarkerUpdates(std::string frame_id) : frame_id_(std::move(frame_id)) {}
+  /// `legend`: the title and size of the legend over the table.
+  explicit MarkerUpdates(std::string frame_id, LegendStyle legend = LegendStyle())
+      : frame_id_(std::move(frame_id)), legend_(std::move(legend)) {}
 
   /// Every marker of the mirror's bricks from scratch, after a DELETEALL,
   /// with `table` and its legend (makeMarkers()); what is shown is then
@@ -51,6 +54,7 @@ class MarkerUpdates {
                  visualization_msgs::Marker* marker) const;
 
   std::string frame_id_;
+  LegendStyle legend_;
   /// By serial: the keys of each brick's markers that a viewer shows.
   std::map<unsigned, std::vector<Key>> shown_;
   std::set<int> edge_groups_shown_;

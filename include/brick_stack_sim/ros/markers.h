@@ -26,7 +26,8 @@ namespace ros_adapter {
 visualization_msgs::MarkerArray makeMarkers(const std::vector<BrickSnapshot>& bricks,
                                             const SupportGeometryMap& supports,
                                             const TableOptions& table, const std::string& frame_id,
-                                            const ros::Time& stamp);
+                                            const ros::Time& stamp,
+                                            const LegendStyle& legend = LegendStyle());
 
 }  // namespace ros_adapter
 }  // namespace brick_stack_sim

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <geometry_msgs/Pose.h>
 #include <interactive_markers/interactive_marker_server.h>
@@ -11,6 +12,7 @@
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <Eigen/Geometry>
 
+#include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/teleop/sim_session.h"
 #include "brick_stack_sim/teleop/teleop_options.h"
@@ -46,7 +48,9 @@ class BrickPlacer {
   BrickPlacer& operator=(const BrickPlacer&) = delete;
 
   /// Waits for the simulator for options.teleop.wait_for_sim and logs the
-  /// outcome; the placer works either way once the simulator is there.
+  /// outcome; the placer works either way once the simulator is there. With
+  /// options.start_beside, the ghost then moves beside the bricks the
+  /// simulator has, resting on the table top.
   void waitForSimulator();
 
  private:
@@ -59,6 +63,13 @@ class BrickPlacer {
   /// Takes the feedback's pose as the ghost's; false (logged) when it is not
   /// finite, not a unit quaternion or not in the world frame.
   bool takeFeedbackPose(const FeedbackConstPtr& feedback);
+  /// The simulator's bricks as boxes (those with a finite pose and size);
+  /// false when it does not answer.
+  bool brickBoxes(std::vector<OrientedBox>* boxes);
+  /// Keeps `*pose` from sinking into the table: a brick of `half_extents`
+  /// there would have its lowest corner at the table top at least
+  /// (lowestCentreZ()). True when it had to be raised.
+  static bool keepAboveTable(const Eigen::Vector3d& half_extents, Eigen::Isometry3d* pose);
 
   void onPoseUpdate(const FeedbackConstPtr& feedback);
   void placeHere(const FeedbackConstPtr& feedback);

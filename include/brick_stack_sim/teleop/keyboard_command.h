@@ -59,6 +59,13 @@ struct CursorSteps {
   double min_z = kTableTop;    ///< The cursor never goes below this height [m].
 };
 
+/// The lowest the cursor may go [m]: with a brick of `half_extents` [m] held
+/// at it, the height at which that brick's lowest corner touches the table
+/// top (lowestCentreZ() of the cursor's orientation), so that its target
+/// never sinks into the table; the table top itself for zero half extents
+/// (nothing held). Non-finite half extents count as zero.
+double cursorFloor(const Cursor& cursor, const Eigen::Vector3d& half_extents);
+
 /// The cursor after `command`: moved along its world axis, or turned about
 /// the world z axis (roll and pitch kept), its height never below
 /// `steps.min_z`. Commands that do not move it leave it as it is.

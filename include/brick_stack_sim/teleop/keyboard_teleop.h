@@ -35,6 +35,9 @@ class KeyboardTeleop {
   ros::NodeHandle node_handle_;
   SimSession sim_;
   Cursor cursor_;
+  /// Half extents of the held brick [m] (zero when none): the cursor stays
+  /// high enough for it to clear the table (cursorFloor()).
+  Eigen::Vector3d held_half_extents_ = Eigen::Vector3d::Zero();
   ros::Publisher cursor_marker_;
 };
 

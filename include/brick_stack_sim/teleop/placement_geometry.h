@@ -34,6 +34,20 @@ double supportTopUnder(const OrientedBox& ghost, const std::vector<OrientedBox>&
 /// is put at rest. Orientation, x and y are kept.
 Eigen::Isometry3d restingPose(const OrientedBox& ghost, const std::vector<OrientedBox>& bricks);
 
+/// The lowest height [m] of the centre of a box of `half_extents` [m] turned
+/// by `rotation` whose lowest corner is still at or above the table top:
+/// kTableTop plus the box's half height along world z. A held brick's target
+/// below it would put the brick into the table.
+double lowestCentreZ(const Eigen::Vector3d& half_extents, const Eigen::Matrix3d& rotation);
+
+/// Where a ghost of `half_extents` (yaw 0) starts so that it hides nothing:
+/// resting on the table top beside the +x side of the bounding box, seen from
+/// above, of the finite `bricks` (the nearer side in config/teleop.rviz's
+/// view), its own longest half side clear of it, and at the box's middle in
+/// y; `fallback` when there is no such brick.
+Eigen::Vector3d besideBricks(const std::vector<OrientedBox>& bricks,
+                             const Eigen::Vector3d& half_extents, const Eigen::Vector3d& fallback);
+
 /// Index of the point of `centres` nearest to `point`; -1 when `centres` is
 /// empty. Non-finite centres are never chosen.
 int nearestIndex(const Eigen::Vector3d& point, const std::vector<Eigen::Vector3d>& centres);

@@ -30,6 +30,9 @@ struct TeleopOptions {
 struct PlacerOptions {
   TeleopOptions teleop;
   std::string type;  ///< Type of the ghost at start; empty: the types' default type.
+  /// ~initial_position was not given: once the simulator answers, the ghost
+  /// moves beside the bricks it has (besideBricks()), where it hides none.
+  bool start_beside = true;
   /// Brick types; empty: the simulator's own ~types_urdf / ~materials_yaml,
   /// else the package's urdf/bricks.urdf and config/bricks.yaml.
   std::string types_urdf;

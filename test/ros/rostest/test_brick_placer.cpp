@@ -323,6 +323,25 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
   EXPECT_NEAR(lifted->pose.position.x, 0.1, 1e-4);
   EXPECT_NEAR(lifted->pose.position.y, 0.1, 1e-4);
 
+  // Dragged 5 cm into the table, the target stops where the brick rests on
+  // the table top (its half thickness up), and the ghost is put back there.
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ghost_poses_.clear();
+  }
+  drag(pose(0.1, 0.1, -0.05));
+  EXPECT_TRUE(waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return !ghost_poses_.empty() &&
+               std::abs(ghost_poses_.back().position.z - 0.5 * kThickness) < 1e-9;
+      },
+      kActionTimeout))
+      << "the ghost was not kept above the table";
+  EXPECT_TRUE(waitForBrick("near", [](const Brick& b) {
+    return b.state == Brick::HELD && std::abs(b.pose.position.z - 0.5 * kThickness) < 1e-4;
+  })) << "the held brick did not come down onto the table top";
+
   // Released at rest, it falls back onto the table.
   select(teleop::kReleaseEntry, pose(0.1, 0.1, 0.05));
   ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.state != Brick::HELD; }))

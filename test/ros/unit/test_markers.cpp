@@ -823,6 +823,76 @@ TEST(LegendMarkers, OneLinePerStateInItsTintThenTheStabilityMarkers) {
   }
 }
 
+TEST(LegendMarkers, TitleStandsOverTheTableCentreAboveTheLegend) {
+  const TableOptions table;
+  LegendStyle style;
+  style.title = "mode equilibrium";
+  const MarkerArray array = makeLegendMarkers(table, "world", ros::Time(1.0), style);
+  expectAllFinite(array);
+  const Marker* title = findMarker(array, kLegendMarkerNamespace, kLegendTitleMarkerId);
+  ASSERT_NE(title, nullptr);
+  EXPECT_EQ(title->type, Marker::TEXT_VIEW_FACING);
+  EXPECT_EQ(title->text, "mode equilibrium");
+  EXPECT_EQ(title->color.a, 1.0f);
+  // Inside the table's footprint, over its centre, where the structure stands.
+  EXPECT_LE(std::abs(title->pose.position.x), 0.5 * table.size.x());
+  EXPECT_LE(std::abs(title->pose.position.y), 0.5 * table.size.y());
+  // Above the table top, and with its whole height above the legend's
+  // first line (text is centred on its position).
+  const Marker& first = array.markers[0];
+  EXPECT_GT(title->pose.position.z - 0.5 * title->scale.z,
+            first.pose.position.z + 0.5 * first.scale.z);
+  // Larger than a line of the legend: it names the table from afar.
+  EXPECT_GE(title->scale.z, 2.0 * first.scale.z);
+  // No title: the lines alone.
+  EXPECT_EQ(makeLegendMarkers(table, "world", ros::Time(1.0)).markers.size(),
+            legendEntries().size());
+}
+
+TEST(LegendMarkers, SizesAndOffsetsScaleWithTheTableAndTheStyle) {
+  const TableOptions table;
+  LegendStyle style;
+  style.title = "mode com";
+  const MarkerArray one = makeLegendMarkers(table, "world", ros::Time(1.0), style);
+  // Twice the scale, or a table twice as large: every height, offset and
+  // spacing twice as large, the column still over the table.
+  LegendStyle doubled = style;
+  doubled.scale = 2.0;
+  TableOptions large = table;
+  large.size *= 2.0;
+  for (const MarkerArray& two : {makeLegendMarkers(table, "world", ros::Time(1.0), doubled),
+                                 makeLegendMarkers(large, "world", ros::Time(1.0), style)}) {
+    ASSERT_EQ(two.markers.size(), one.markers.size());
+    for (std::size_t i = 0; i < one.markers.size(); ++i) {
+      const Marker& a = one.markers[i];
+      const Marker& b = two.markers[i];
+      EXPECT_EQ(a.id, b.id);
+      EXPECT_NEAR(b.scale.z, 2.0 * a.scale.z, 1e-12) << i;
+      EXPECT_NEAR(b.pose.position.z, 2.0 * a.pose.position.z, 1e-12) << i;
+      // The default offsets (0.2, 0.12) doubled are still inside 0.6 by 0.4.
+      EXPECT_NEAR(b.pose.position.x, 2.0 * a.pose.position.x, 1e-12) << i;
+      EXPECT_NEAR(b.pose.position.y, 2.0 * a.pose.position.y, 1e-12) << i;
+    }
+  }
+  // The default table is the reference: its legend keeps the constants.
+  EXPECT_NEAR(legendScale(table, LegendStyle()), 1.0, 1e-12);
+  EXPECT_NEAR(one.markers[0].scale.z, kLegendTextHeight, 1e-12);
+  EXPECT_NEAR(one.markers[0].pose.position.z, kLegendTop, 1e-12);
+  // A scale that is not one counts as 1.
+  for (double bad : {kNaN, 0.0, -2.0}) {
+    LegendStyle broken;
+    broken.scale = bad;
+    EXPECT_NEAR(legendScale(table, broken), 1.0, 1e-12) << bad;
+  }
+  // A huge scale still keeps the column over the table's corner at most.
+  LegendStyle huge;
+  huge.scale = 10.0;
+  for (const Marker& line : makeLegendMarkers(table, "world", ros::Time(1.0), huge).markers) {
+    EXPECT_LE(std::abs(line.pose.position.x), 0.5 * table.size.x() + 1e-12);
+    EXPECT_LE(std::abs(line.pose.position.y), 0.5 * table.size.y() + 1e-12);
+  }
+}
+
 TEST(AllMarkers, TableAndLegendComeWithEveryArrayAfterItsDeleteAll) {
   // An empty scene still shows the table and the legend; with bricks, they
   // come after the DELETEALL that would otherwise remove them.
