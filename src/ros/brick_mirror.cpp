@@ -99,7 +99,20 @@ void mergeFresh(const BrickWorld& world, std::vector<BrickSnapshot> fresh,
 
 }  // namespace
 
+void BrickMirror::adopt(BrickMirror fresh) {
+  // The bricks last published go; those of a world adopted and replaced
+  // again before any update() were never published.
+  if (!adopted_)
+    adopted_removed_.insert(adopted_removed_.end(), std::make_move_iterator(bricks_.begin()),
+                            std::make_move_iterator(bricks_.end()));
+  bricks_ = std::move(fresh.bricks_);
+  revision_ = fresh.revision_;
+  replaced_ = fresh.replaced_;
+  adopted_ = true;
+}
+
 BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
+  if (adopted_) return adoptedChanges(world);
   Changes changes;
   changes.replaced = replaced_;
   std::vector<unsigned> serials;
@@ -125,6 +138,35 @@ BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
   }
   dropRemoved(serials, &bricks_, &changes.removed);
   mergeFresh(world, std::move(fresh), &bricks_, &changes);
+  return changes;
+}
+
+BrickMirror::Changes BrickMirror::adoptedChanges(const BrickWorld& world) {
+  adopted_ = false;
+  // What changed in the new world since the adopted mirror was made, read as
+  // usual; then, as after forget(), every brick is new to the subscribers
+  // and the replaced worlds' bricks are gone.
+  Changes changes;
+  if (replaced_) {  // a mirror adopted before it read its world: read it now
+    bricks_.clear();
+    for (BrickSnapshot& snapshot : world.snapshot())
+      bricks_.push_back(mirrored(world, std::move(snapshot)));
+    revision_ = world.revision();
+    replaced_ = false;
+  } else if (world.revision() != revision_) {
+    std::vector<unsigned> serials;
+    std::vector<BrickSnapshot> fresh = world.snapshotChangedSince(revision_, &serials);
+    revision_ = world.revision();
+    dropRemoved(serials, &bricks_, &changes.removed);
+    mergeFresh(world, std::move(fresh), &bricks_, &changes);
+  }
+  changes.removed.insert(changes.removed.begin(), std::make_move_iterator(adopted_removed_.begin()),
+                         std::make_move_iterator(adopted_removed_.end()));
+  adopted_removed_.clear();
+  changes.changed.resize(bricks_.size());
+  for (std::size_t i = 0; i < bricks_.size(); ++i) changes.changed[i] = i;
+  changes.moved = changes.changed;
+  changes.replaced = true;
   return changes;
 }
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <mutex>
 
+#include "brick_stack_sim/core/allocation_guard.h"
+#include "brick_stack_sim/core/options/parameter_value.h"
 #include "time_text.h"
 
 namespace brick_stack_sim {
@@ -70,45 +72,54 @@ Status SimNode::playInitialScene() {
   Scene scene;
   std::string message;
   Status played = loadNamedScene(initial_scene, &scene);
-  if (played) {
-    std::lock_guard<TicketMutex> lock(world_mutex_);
-    played = resetWorld(initial_scene, scene, &message);
-  }
+  if (played) played = resetWorld(initial_scene, scene, &message);
   if (!played)
-    return Status::error("parameter ~scene = '" + initial_scene + "': " + played.message);
+    return Status::error("parameter ~scene = '" + shortenForMessage(initial_scene, 200) +
+                         "': " + played.message);
   ROS_INFO("%s", message.c_str());
   return Status::success();
 }
 
+template <typename Request, typename Response>
+ros::ServiceServer SimNode::advertiseGuarded(const char* service,
+                                             bool (SimNode::*handler)(Request&, Response&),
+                                             ros::CallbackQueue* queue) {
+  ros::AdvertiseServiceOptions options;
+  options.init<Request, Response>(
+      service, [this, service, handler](Request& request, Response& response) {
+        bool answered = true;
+        const Status guarded = refuseOnAllocationFailure("serving ~" + std::string(service), [&] {
+          answered = (this->*handler)(request, response);
+          return Status::success();
+        });
+        if (guarded) return answered;
+        ROS_WARN_THROTTLE(1.0, "%s", guarded.message.c_str());
+        response = Response();
+        response.success = false;
+        response.message = guarded.message;
+        return true;
+      });
+  options.callback_queue = queue;
+  return node_handle_.advertiseService(options);
+}
+
 void SimNode::advertiseServices() {
-  ros::NodeHandle& nh = node_handle_;
   // The long requests get their own queue and thread.
-  ros::AdvertiseServiceOptions step_options;
-  step_options.init<StepSimulation::Request, StepSimulation::Response>(
-      kStepService, [this](StepSimulation::Request& request, StepSimulation::Response& response) {
-        return step(request, response);
-      });
-  step_options.callback_queue = &long_work_queue_;
-  ros::AdvertiseServiceOptions reset_options;
-  reset_options.init<ResetScene::Request, ResetScene::Response>(
-      kResetService, [this](ResetScene::Request& request, ResetScene::Response& response) {
-        return reset(request, response);
-      });
-  reset_options.callback_queue = &long_work_queue_;
   long_work_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &long_work_queue_);
   long_work_spinner_->start();
 
-  services_.push_back(nh.advertiseService(kPlaceBrickService, &SimNode::placeBrick, this));
-  services_.push_back(nh.advertiseService(kRemoveBrickService, &SimNode::removeBrick, this));
-  services_.push_back(nh.advertiseService(reset_options));
-  services_.push_back(nh.advertiseService(kGetBricksService, &SimNode::getBricks, this));
-  services_.push_back(nh.advertiseService(kPushBrickService, &SimNode::pushBrick, this));
-  services_.push_back(nh.advertiseService(kQueryPlacementService, &SimNode::queryPlacement, this));
-  services_.push_back(nh.advertiseService(kPauseService, &SimNode::pause, this));
-  services_.push_back(nh.advertiseService(step_options));
-  services_.push_back(nh.advertiseService(kGraspBrickService, &SimNode::graspBrick, this));
-  services_.push_back(nh.advertiseService(kReleaseBrickService, &SimNode::releaseBrick, this));
-  held_target_subscriber_ = nh.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, this);
+  services_.push_back(advertiseGuarded(kPlaceBrickService, &SimNode::placeBrick));
+  services_.push_back(advertiseGuarded(kRemoveBrickService, &SimNode::removeBrick));
+  services_.push_back(advertiseGuarded(kResetService, &SimNode::reset, &long_work_queue_));
+  services_.push_back(advertiseGuarded(kGetBricksService, &SimNode::getBricks));
+  services_.push_back(advertiseGuarded(kPushBrickService, &SimNode::pushBrick));
+  services_.push_back(advertiseGuarded(kQueryPlacementService, &SimNode::queryPlacement));
+  services_.push_back(advertiseGuarded(kPauseService, &SimNode::pause));
+  services_.push_back(advertiseGuarded(kStepService, &SimNode::step, &long_work_queue_));
+  services_.push_back(advertiseGuarded(kGraspBrickService, &SimNode::graspBrick));
+  services_.push_back(advertiseGuarded(kReleaseBrickService, &SimNode::releaseBrick));
+  held_target_subscriber_ =
+      node_handle_.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, this);
 }
 
 void SimNode::logStart(const BrickTypeLibrary& types) const {
@@ -129,7 +140,9 @@ void SimNode::restartPacing() { pacer_.restart(wallNow(), simTime()); }
 void SimNode::onStepTimer(const ros::WallTimerEvent& /*event*/) {
   std::lock_guard<TicketMutex> lock(world_mutex_);
   const double publish_period = 1.0 / options_.config.publish.rate;
-  if (!paused_) {
+  if (resetting_) {
+    // ~reset builds the next world: this one's clock stands still.
+  } else if (!paused_) {
     stepTick();
   } else if (wallNow() >= publisher_->lastStateWall() + publish_period) {
     // Paused, the graph still sees the simulation, as Gazebo's does: a

@@ -40,6 +40,9 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   BrickPlacement placement;
   if (Status converted = fromMsg(request, &placement); !converted)
     return refuse(kPlaceBrickService, converted, &response);
+  // tf is the adapter's: the core knows no fixed frame (docs/design.md, "Layers").
+  if (Status framed = publisher_->frames().checkBrickId(placement.id); !framed)
+    return refuse(kPlaceBrickService, framed, &response);
   std::lock_guard<TicketMutex> lock(world_mutex_);
   std::string id;
   if (Status added = simulation_->world().addBrick(placement, &id); !added)
@@ -83,49 +86,14 @@ bool SimNode::removeBrick(RemoveBrick::Request& request, RemoveBrick::Response& 
   return true;
 }
 
-Status SimNode::loadNamedScene(const std::string& scene_name, Scene* scene) const {
-  if (scene_name.empty()) return Status::success();
-  // The types of the simulation, not of its current world: they never change.
-  return loadScene(scene_name, options_.config.data.scene_dirs, simulation_->types(), scene,
-                   options_.config.data.scene_max_bytes);
-}
-
-Status SimNode::resetWorld(const std::string& scene_name, const Scene& scene,
-                           std::string* message) {
-  if (Status reset = simulation_->reset(scene); !reset)
-    return Status::error("scene '" + scene_name + "': " + reset.message);
-  publisher_->publishEvents();  // the removed events, then the new scene's first placements
-  publisher_->forget();         // a new world: its serials and revisions start again
-  answers_.forget();
-  const std::vector<RefusedPlacement> refused = simulation_->takeRefused();
-  logRefusedPlacements(refused);
-  publisher_->markDirty();
-  pacer_.schedulePublish(simTime());
-  restartPacing();
-
-  std::ostringstream text;
-  if (scene_name.empty()) {
-    text << "cleared the table at " << formatTime(simTime());
-  } else {
-    text << "playing scene '" << (scene.name.empty() ? scene_name : scene.name) << "' from "
-         << formatTime(simTime()) << ": " << scene.bricks.size() << " bricks scheduled";
-    if (!refused.empty()) text << ", " << refused.size() << " refused at once (see the log)";
-  }
-  *message = text.str();
-  return Status::success();
-}
-
 bool SimNode::reset(ResetScene::Request& request, ResetScene::Response& response) {
   // Reading and checking a big scene takes a while: others are served meanwhile.
   Scene scene;
   if (Status loaded = loadNamedScene(request.scene, &scene); !loaded)
     return refuse(kResetService, loaded, &response);
   std::string message;
-  {
-    std::lock_guard<TicketMutex> lock(world_mutex_);
-    if (Status done = resetWorld(request.scene, scene, &message); !done)
-      return refuse(kResetService, done, &response);
-  }
+  if (Status done = resetWorld(request.scene, scene, &message); !done)
+    return refuse(kResetService, done, &response);
   ROS_INFO("%s", message.c_str());
   response.success = true;
   response.message = message;
@@ -183,7 +151,7 @@ bool SimNode::getBricks(GetBricks::Request& request, GetBricks::Response& respon
     response.bricks.push_back(std::move(msg));
   }
   response.success = true;
-  response.message = std::to_string(response.bricks.size()) + " bricks at " + formatTime(time);
+  response.message = counted(response.bricks.size(), "brick") + " at " + formatTime(time);
   if (left_out > 0) response.message += "; " + std::to_string(left_out) + " left out: not finite";
   return true;
 }

@@ -29,7 +29,12 @@ StatePublisher::StatePublisher(ros::NodeHandle& node_handle, const PublishOption
     : options_(options),
       world_mutex_(world_mutex),
       simulation_(simulation),
-      marker_updates_(options.frame_id) {
+      // The title says which mode runs: two simulators side by side
+      // (compare.launch) are told apart at a glance.
+      marker_updates_(options.frame_id,
+                      LegendStyle{"mode " + simulation.options().stability.mode,
+                                  options.legend_scale}),
+      frames_(options.frame_id, options.frame_prefix) {
   // A new subscriber gets everything at once, alone: with deltas it could
   // not start otherwise, and a viewer that connects while nothing changes
   // (paused, or a fully frozen stack) would wait for the next change.
@@ -50,9 +55,10 @@ StatePublisher::StatePublisher(ros::NodeHandle& node_handle, const PublishOption
           "time while nodes started without /use_sim_time read wall time; set /use_sim_time "
           "before starting the nodes (sim.launch does with publish_clock:=true)");
   }
-  transforms_ = std::make_unique<BrickTransforms>(node_handle, options.frame_id,
-                                                  options.frame_prefix, kStaticTransformsPeriod);
+  transforms_ = std::make_unique<BrickTransforms>(node_handle, frames_, kStaticTransformsPeriod);
   transforms_->clear(stamp());
+  graph_checks_ = std::make_unique<GraphChecks>(node_handle, frames_.table(), options.clock,
+                                                GraphChecks::Windows());
 }
 
 ros::Time StatePublisher::stamp() const {
@@ -67,16 +73,21 @@ void StatePublisher::publishClock() {
 }
 
 void StatePublisher::publishEvents() {
+  // ~events is not latched: with nobody listening a message reaches no one,
+  // and a reset of 10 000 bricks would build 20 000 of them under the world
+  // lock for nothing.
+  const bool listened = events_publisher_.getNumSubscribers() > 0;
   for (const SimEvent& event : simulation_.takeEvents()) {
-    StabilityEvent msg = toMsg(event);
     const double t = event.time;
-    msg.header.stamp = options_.clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
-    msg.header.frame_id = options_.frame_id;
     if (event.kind == SimEventKind::kNonFinite) {
       // NaN, Inf or a runaway speed: the reason says which and how it was repaired.
       ROS_WARN("brick %s at %s: %s", event.brick_id.c_str(), formatTime(t).c_str(),
                event.reason.c_str());
     }
+    if (!listened) continue;
+    StabilityEvent msg = toMsg(event);
+    msg.header.stamp = options_.clock && std::isfinite(t) && t >= 0.0 ? ros::Time(t) : stamp();
+    msg.header.frame_id = options_.frame_id;
     events_publisher_.publish(msg);
   }
 }

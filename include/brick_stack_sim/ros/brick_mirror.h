@@ -52,14 +52,27 @@ class BrickMirror {
   /// forget() was called and no update() has followed: the next reads
   /// every brick.
   bool forgotten() const { return replaced_; }
+  /// The world was replaced by the one `fresh` mirrors (a mirror brought up
+  /// to it before it replaced this one's, away from the world lock): the next
+  /// update() reports this mirror's bricks removed and every brick of
+  /// `fresh` new, as after forget(), but reads only what changed in the new
+  /// world since `fresh` was made.
+  void adopt(BrickMirror fresh);
 
   /// Every brick, in placement order (rising serials).
   const std::vector<MirroredBrick>& bricks() const { return bricks_; }
 
  private:
+  /// update() after adopt().
+  Changes adoptedChanges(const BrickWorld& world);
+
   std::vector<MirroredBrick> bricks_;
   std::uint64_t revision_ = 0;
   bool replaced_ = true;
+  /// adopt() was called and no update() has followed.
+  bool adopted_ = false;
+  /// The bricks of the worlds adopt() replaced, for the next update() to report.
+  std::vector<MirroredBrick> adopted_removed_;
 };
 
 }  // namespace ros_adapter

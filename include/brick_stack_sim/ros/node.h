@@ -69,8 +69,9 @@ class SimNode {
  private:
   SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& options);
 
-  // Every member function below but the service handlers, onStepTimer and
-  // onHeldTarget expects world_mutex_ to be held by the caller.
+  // Every member function below but the service handlers, onStepTimer,
+  // onHeldTarget, playInitialScene and resetWorld expects world_mutex_ to be
+  // held by the caller.
 
   /// Sim time [s]; never goes backwards, across resets included.
   double simTime() const;
@@ -80,6 +81,13 @@ class SimNode {
   Status playInitialScene();
   /// Every service and ~held_target; ~step and ~reset on the long-work queue.
   void advertiseServices();
+  /// Advertises `handler` as `service` on `queue` (null: the global one); an
+  /// allocation failure inside it is answered as a refusal with a message
+  /// (refuseOnAllocationFailure), never as a bare exception.
+  template <typename Request, typename Response>
+  ros::ServiceServer advertiseGuarded(const char* service,
+                                      bool (SimNode::*handler)(Request&, Response&),
+                                      ros::CallbackQueue* queue = nullptr);
   void logStart(const BrickTypeLibrary& types) const;
 
   // --- stepping (node.cpp) ---------------------------------------------------
@@ -124,8 +132,13 @@ class SimNode {
   /// world, so it runs without the lock.
   Status loadNamedScene(const std::string& scene_name, Scene* scene) const;
   /// Empties the table (scene empty) or replaces the bricks by the scene's;
-  /// on failure nothing changes. `message` receives what was done.
+  /// on failure nothing changes. `message` receives what was done. Takes
+  /// the world lock itself, twice: the scene's world is built between,
+  /// off the lock (node_reset.cpp).
   Status resetWorld(const std::string& scene_name, const Scene& scene, std::string* message);
+  /// What a new world starts with: its events out, the mirrors forgotten,
+  /// the publication and the pacing from now. Returns what was done.
+  std::string startNewWorld(const std::string& scene_name, const Scene& scene);
   /// The bricks `ids` names for ~get_bricks into `asked`, or every brick
   /// into `response` when it names none; `left_out` counts those not finite.
   Status collectBricks(const std::vector<std::string>& ids, GetBricks::Response* response,
@@ -146,6 +159,8 @@ class SimNode {
   std::unique_ptr<Simulation> simulation_;
 
   bool paused_ = false;
+  /// ~reset is building the next world off the lock: the timer steps nothing.
+  bool resetting_ = false;
   /// The world as ~get_bricks last answered (a mirror apart from the
   /// publisher's: an answer must not hide a change from the next publish).
   BrickMirror answers_;

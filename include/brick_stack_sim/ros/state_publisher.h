@@ -10,6 +10,7 @@
 #include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/ros/brick_mirror.h"
 #include "brick_stack_sim/ros/brick_transforms.h"
+#include "brick_stack_sim/ros/graph_checks.h"
 #include "brick_stack_sim/ros/marker_updates.h"
 #include "brick_stack_sim/ros/ticket_mutex.h"
 
@@ -44,10 +45,13 @@ class StatePublisher {
   bool dirty() const { return dirty_; }
   /// Wall time of the last publishState() [s].
   double lastStateWall() const { return last_state_wall_; }
-  /// The world was replaced: its serials and revisions start again.
-  void forget() { mirror_.forget(); }
+  /// The world was replaced by the one `mirror` was brought up to, off the
+  /// world lock (BrickMirror::adopt): the next publish sends it whole.
+  void adopt(BrickMirror mirror) { mirror_.adopt(std::move(mirror)); }
   /// The world as last published.
   const BrickMirror& mirror() const { return mirror_; }
+  /// The frames the node names on tf.
+  const FrameNames& frames() const { return frames_; }
 
  private:
   /// ~bricks: every brick, or (bricks_delta) what `changes` found.
@@ -77,7 +81,10 @@ class StatePublisher {
   ros::Publisher markers_publisher_;
   ros::Publisher clock_publisher_;
   /// /tf for what moved, latched /tf_static for the table and what rests.
+  FrameNames frames_;
   std::unique_ptr<BrickTransforms> transforms_;
+  /// Another publisher of the node's frames, a missing /clock: warned at start.
+  std::unique_ptr<GraphChecks> graph_checks_;
 };
 
 }  // namespace ros_adapter

@@ -18,6 +18,14 @@ Status Simulation::create(const WorldOptions& options, const BrickTypeLibrary& t
 }
 
 Status Simulation::reset(const Scene& scene) {
+  PreparedReset prepared;
+  if (Status ready = prepareReset(scene, world_->time(), &prepared); !ready) return ready;
+  applyReset(std::move(prepared));
+  return Status::success();
+}
+
+Status Simulation::prepareReset(const Scene& scene, double start_time,
+                                PreparedReset* prepared) const {
   // Everything that can fail happens before the current world is touched. A
   // fresh Bullet world keeps no pair cache or warm-starting data, so a scene
   // after a reset runs exactly as in a new simulation.
@@ -33,20 +41,26 @@ Status Simulation::reset(const Scene& scene) {
   }
   BrickTypeLibrary types = types_;
   if (Status merged = mergeSceneTypes(scene, &types); !merged) return merged;
-  std::unique_ptr<BrickWorld> replacement;
-  if (Status created = BrickWorld::create(options, types, &replacement, world_->time()); !created)
+  PreparedReset result;
+  if (Status created = BrickWorld::create(options, types, &result.world, start_time); !created)
     return created;
+  result.player = ScenePlayer(scene.bricks, start_time);
+  result.refused = result.player.placeDue(result.world.get());
+  *prepared = std::move(result);
+  return Status::success();
+}
 
+std::unique_ptr<BrickWorld> Simulation::applyReset(PreparedReset prepared) {
   for (SimEvent& event : world_->takeEvents()) events_.push_back(std::move(event));
   // Removed in placement order so that observers see a deterministic sequence.
-  for (const BrickSnapshot& brick : world_->snapshot())
+  for (std::string& id : world_->brickIds())
     events_.push_back(
-        SimEvent{world_->time(), SimEventKind::kRemoved, brick.id, "scene reset", {}});
-  world_ = std::move(replacement);
-  player_ = ScenePlayer(scene.bricks, world_->time());
-  for (RefusedPlacement& refused : player_.placeDue(world_.get()))
-    refused_.push_back(std::move(refused));
-  return Status::success();
+        SimEvent{world_->time(), SimEventKind::kRemoved, std::move(id), "scene reset", {}});
+  std::unique_ptr<BrickWorld> replaced = std::move(world_);
+  world_ = std::move(prepared.world);
+  player_ = std::move(prepared.player);
+  for (RefusedPlacement& refused : prepared.refused) refused_.push_back(std::move(refused));
+  return replaced;
 }
 
 void Simulation::step() {

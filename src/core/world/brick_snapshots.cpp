@@ -10,6 +10,13 @@ namespace brick_stack_sim {
 
 std::uint64_t BrickWorld::revision() const { return state_->revision; }
 
+std::vector<std::string> BrickWorld::brickIds() const {
+  std::vector<std::string> ids;
+  ids.reserve(state_->bricks.size());
+  for (const auto& brick : state_->bricks.all()) ids.push_back(brick->id);
+  return ids;
+}
+
 namespace {
 
 BrickSnapshot snapshotOf(const WorldState& w, const BrickRecord& brick) {

@@ -5,8 +5,11 @@
 // node. Each test file derives its own fixture, which brings the node to its
 // starting state in SetUp.
 
+#include <dirent.h>
+
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <future>
 #include <memory>
@@ -19,6 +22,7 @@
 #include <ros/service_traits.h>
 
 #include "brick_stack_sim/client/sim_client.h"
+#include "brick_stack_sim/ros/interface_names.h"
 
 namespace brick_stack_sim {
 namespace test {
@@ -96,6 +100,29 @@ bool callWithin(const std::shared_ptr<client::SimClient>& sim, Service& srv, dou
   EXPECT_TRUE(reply.reached) << reply.message;
   srv.response = reply.response;
   return reply.reached;
+}
+
+/// The node's resident memory [kB], found by its name on the command line
+/// roslaunch gave it (__name:=brick_sim); 0 when not found.
+inline long nodeResidentKilobytes() {
+  DIR* proc = opendir("/proc");
+  if (!proc) return 0;
+  long rss = 0;
+  while (dirent* entry = readdir(proc)) {
+    const std::string pid = entry->d_name;
+    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream cmdline("/proc/" + pid + "/cmdline");
+    std::string args((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
+    if (args.find("brick_stack_sim_node") == std::string::npos ||
+        args.find(std::string("__name:=") + ros_adapter::kNodeName + '\0') == std::string::npos)
+      continue;
+    std::ifstream status("/proc/" + pid + "/status");
+    std::string line;
+    while (std::getline(status, line))
+      if (line.rfind("VmRSS:", 0) == 0) rss = std::stol(line.substr(6));
+  }
+  closedir(proc);
+  return rss;
 }
 
 class NodeFixture : public ::testing::Test {

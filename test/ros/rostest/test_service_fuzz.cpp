@@ -20,8 +20,6 @@
 #include <thread>
 #include <vector>
 
-#include <dirent.h>
-
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -132,29 +130,6 @@ class TopicWatch {
   long messages_ = 0;
   ros::Subscriber bricks_, markers_, events_, tf_;
 };
-
-/// The node's resident memory [kB], found by its name on the command line
-/// roslaunch gave it (__name:=brick_sim); 0 when not found.
-long nodeResidentKilobytes() {
-  DIR* proc = opendir("/proc");
-  if (!proc) return 0;
-  long rss = 0;
-  while (dirent* entry = readdir(proc)) {
-    const std::string pid = entry->d_name;
-    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream cmdline("/proc/" + pid + "/cmdline");
-    std::string args((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
-    if (args.find("brick_stack_sim_node") == std::string::npos ||
-        args.find(std::string("__name:=") + ros_adapter::kNodeName + '\0') == std::string::npos)
-      continue;
-    std::ifstream status("/proc/" + pid + "/status");
-    std::string line;
-    while (std::getline(status, line))
-      if (line.rfind("VmRSS:", 0) == 0) rss = std::stol(line.substr(6));
-  }
-  closedir(proc);
-  return rss;
-}
 
 class ServiceFuzz : public test::NodeFixture {
  protected:
@@ -436,12 +411,12 @@ TEST_F(ServiceFuzz, PlaceAndRemoveSoakKeepsMemoryFlat) {
   ASSERT_TRUE(setPaused(true));
   ResetScene clear;
   ASSERT_TRUE(callInTime(clear) && clear.response.success);
-  ASSERT_GT(nodeResidentKilobytes(), 0) << "the node's process was not found";
+  ASSERT_GT(test::nodeResidentKilobytes(), 0) << "the node's process was not found";
   constexpr int kBricksPerRound = 20;
   constexpr unsigned kStepsPerRound = 1000;  // 1 s of sim time
   const int rounds = static_cast<int>(std::ceil(soak_sim_seconds_));
   const int warm_up = std::max(1, rounds / 10);
-  long warm_rss = 0, peak_rss = 0, start_rss = nodeResidentKilobytes();
+  long warm_rss = 0, peak_rss = 0, start_rss = test::nodeResidentKilobytes();
   for (int round = 0; round < rounds && !hung_; ++round) {
     for (int i = 0; i < kBricksPerRound; ++i) {
       // A 5 x 4 grid of planks dropped from 2 cm, turned differently each
@@ -458,11 +433,11 @@ TEST_F(ServiceFuzz, PlaceAndRemoveSoakKeepsMemoryFlat) {
       remove.request.id = "s" + std::to_string(i);
       ASSERT_TRUE(callInTime(remove) && remove.response.success) << remove.response.message;
     }
-    const long rss = nodeResidentKilobytes();
+    const long rss = test::nodeResidentKilobytes();
     peak_rss = std::max(peak_rss, rss);
     if (round == warm_up) warm_rss = rss;
   }
-  const long end_rss = nodeResidentKilobytes();
+  const long end_rss = test::nodeResidentKilobytes();
   std::printf(
       "soak: %d rounds of %d bricks placed, %u steps, removed (%d s of sim time); node RSS "
       "%ld kB at the start, %ld kB after warm-up, peak %ld kB, %ld kB at the end\n",

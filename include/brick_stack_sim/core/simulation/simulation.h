@@ -3,14 +3,23 @@
 #include <memory>
 #include <vector>
 
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/simulation/scene_player.h"
-#include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 
 namespace brick_stack_sim {
+
+/// A scene's world built apart from the simulation that will play it
+/// (Simulation::prepareReset), ready to be swapped in at once
+/// (Simulation::applyReset).
+struct PreparedReset {
+  std::unique_ptr<BrickWorld> world;  ///< With the scene's bricks due at its start placed.
+  ScenePlayer player;                 ///< The scene's later bricks.
+  std::vector<RefusedPlacement> refused;
+};
 
 /// A world, the scene it plays and a clock that never goes backwards: what
 /// the batch runner and the node's ~reset share, so that a scene behaves
@@ -27,6 +36,18 @@ class Simulation {
   /// ("scene reset") and the bricks due now are placed at once. On failure
   /// (the scene's table or types are invalid) nothing changes.
   Status reset(const Scene& scene);
+  /// The expensive half of reset(): builds the scene's world with its clock
+  /// at `start_time` [s] and places the bricks due then. Reads only what
+  /// never changes after create(), so it may run while another thread uses
+  /// the simulation, as long as the simulation's time stays `start_time`
+  /// until applyReset() (the clock must not go backwards). On failure
+  /// `*prepared` is left empty and nothing changes.
+  Status prepareReset(const Scene& scene, double start_time, PreparedReset* prepared) const;
+  /// The quick half: reports the current bricks removed ("scene reset") and
+  /// swaps the prepared world in. Returns the replaced world, so that the
+  /// caller can let it go where its destruction (every Bullet body) holds up
+  /// nobody.
+  std::unique_ptr<BrickWorld> applyReset(PreparedReset prepared);
   /// One world step, then the scene's placements that have come due.
   void step();
 

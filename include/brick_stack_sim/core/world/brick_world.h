@@ -124,6 +124,9 @@ class BrickWorld {
   std::size_t brickCount() const;
   /// Every brick, in placement order.
   std::vector<BrickSnapshot> snapshot() const;
+  /// Every brick's id, in placement order: what snapshot() says at a
+  /// fraction of its cost when only the names are wanted.
+  std::vector<std::string> brickIds() const;
   /// A count that grows with every step and every request that may change
   /// a brick (a step of a settled() world changes none): a publisher keeps
   /// the value it last saw, and asks snapshotChangedSince() for what
