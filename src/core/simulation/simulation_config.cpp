@@ -1,5 +1,8 @@
 #include "brick_stack_sim/core/simulation/simulation_config.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "brick_stack_sim/core/options/options_reader.h"
 #include "brick_stack_sim/core/options/yaml_parameters.h"
 #include "util/text_format.h"
@@ -17,6 +20,7 @@ Status readPublishOptions(OptionsReader& reader, PublishOptions* options) {
     reader.read("frame_id", &publish.frame_id);
     reader.read("frame_prefix", &publish.frame_prefix);
     reader.read("bricks_delta", &publish.bricks_delta);
+    reader.read("legend_scale", &publish.legend_scale);
   });
 }
 
@@ -28,7 +32,32 @@ Status readDataOptions(OptionsReader& reader, DataOptions* options) {
     reader.read("scene_dirs", &data.scene_dirs);
     reader.read("scene", &data.scene);
     reader.read("scene_max_bytes", &data.scene_max_bytes);
+    reader.read("scene_max_bricks", &data.scene_max_bricks);
   });
+}
+
+/// The fixed frame may not be one the node names itself: tf2 refuses a
+/// frame that is its own parent (TF_SELF_TRANSFORM). docs/ros_interface.md,
+/// "Frames and units".
+Status checkFixedFrame(const PublishOptions& p) {
+  std::string unprefixed = p.frame_id;
+  const std::string prefix = prefixedFrame(p.frame_prefix, "");
+  if (unprefixed.compare(0, prefix.size(), prefix) != 0) return Status::success();
+  unprefixed.erase(0, prefix.size());
+  std::string lower(unprefixed);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string number = lower.compare(0, 6, "brick_") == 0 ? lower.substr(6) : "";
+  const bool unnamed = !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c));
+  });
+  // "world" is no frame of the node's: compare.launch runs "left/world" under "left/".
+  if (lower == "table" || lower == "floor" || unnamed)
+    return bad("frame_id", "'" + p.frame_id + "'",
+               "is a frame the node names itself (" + prefix + "table, " + prefix + "floor and " +
+                   prefix + "brick_<n> are its own, in any case, under frame_prefix '" +
+                   p.frame_prefix + "'): choose another fixed frame or another frame_prefix");
+  return Status::success();
 }
 
 }  // namespace
@@ -38,7 +67,18 @@ Status validate(const DataOptions& d) {
   // node would hold the text, the YAML tree and the bricks at once.
   if (d.scene_max_bytes < 1024 || d.scene_max_bytes > (1 << 30))
     return bad("scene_max_bytes", d.scene_max_bytes, "must be in [1024, 2^30] bytes");
+  // A million bricks is ten times the largest tower or pile a generator
+  // places; the count is checked before any brick is built.
+  if (d.scene_max_bricks < 1 || d.scene_max_bricks > 1000000)
+    return bad("scene_max_bricks", d.scene_max_bricks, "must be in [1, 1000000] bricks");
   return Status::success();
+}
+
+SceneLimits sceneLimits(const DataOptions& options) {
+  SceneLimits limits;
+  limits.max_bytes = options.scene_max_bytes;
+  limits.max_bricks = options.scene_max_bricks;
+  return limits;
 }
 
 void fillPackageData(const std::string& package_dir, DataOptions* data) {
@@ -64,7 +104,15 @@ Status validate(const PublishOptions& p) {
       p.frame_prefix.find_first_of(" \t\n") != std::string::npos)
     return bad("frame_prefix", "'" + p.frame_prefix + "'",
                "must be empty or a tf name prefix without a leading '/' or spaces");
+  if (Status own = checkFixedFrame(p); !own) return own;
+  if (!positive(p.legend_scale) || p.legend_scale > 100.0)
+    return bad("legend_scale", p.legend_scale, "must be in (0, 100]");
   return Status::success();
+}
+
+std::string prefixedFrame(const std::string& frame_prefix, const std::string& name) {
+  if (frame_prefix.empty() || frame_prefix.back() == '/') return frame_prefix + name;
+  return frame_prefix + "/" + name;
 }
 
 Status readSimulationConfig(OptionsReader& reader, SimulationConfig* config) {

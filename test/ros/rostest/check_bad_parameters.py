@@ -83,8 +83,26 @@ class BadParameters(unittest.TestCase):
         self.check_refused(["_stability/rest_tme:=0.1"], "~stability/rest_tme",
                            "not a known parameter")
 
+    def test_fixed_frame_named_like_the_table_frame(self):
+        # tf2 would refuse the table frame as its own parent (TF_SELF_TRANSFORM).
+        self.check_refused(["_frame_id:=table"], "~frame_id", "table")
+        self.check_refused(["_frame_id:=sim1/table", "_frame_prefix:=sim1"], "~frame_id",
+                           "sim1/table")
+
     def test_unknown_initial_scene(self):
         self.check_refused(["_scene:=no_such_scene_5678"], "~scene", "no_such_scene_5678")
+
+    def test_scene_brick_cap_out_of_range(self):
+        self.check_refused(["_scene_max_bricks:=0"], "~scene_max_bricks", "must be in [1, 1000000]")
+
+    def test_legend_scale_out_of_range(self):
+        self.check_refused(["_legend_scale:=0"], "~legend_scale", "must be in (0, 100]")
+
+    def test_initial_scene_over_the_brick_cap(self):
+        # tower10 is 10 layers of two bricks: counted, not built, and refused.
+        self.check_refused(["_scene:=tower10", "_scene_max_bricks:=15"], "~scene",
+                           "generator 1 (tower) would bring the scene to 20 bricks: at most 15 "
+                           "(scene_max_bricks)")
 
     def test_good_parameters_keep_running(self):
         process = self.start(["_time_step:=0.001"])

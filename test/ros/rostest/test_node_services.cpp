@@ -349,6 +349,58 @@ TEST_F(NodeServices, HostileScenesAreRefusedAtOnceAndChangeNothing) {
   rmdir(dir.c_str());
 }
 
+TEST_F(NodeServices, ASceneOverTheBrickCapIsRefusedBeforeItIsBuilt) {
+  // 3.4 kB asking for 5 million bricks: the node once answered only
+  // "responded with an error: b'std::bad_alloc'".
+  ASSERT_TRUE(place("keep", 0.1, 0.1, kHalfHeight).success);
+  const std::vector<Brick> before = bricks();
+  const std::string path = ::testing::TempDir() + "/over_cap_" + std::to_string(getpid()) + ".yaml";
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  std::fputs("generator:\n", file);
+  for (int i = 0; i < 50; ++i)
+    std::fputs("  - {name: tower, layers: 10000, bricks_per_layer: 2, grid: [5, 1]}\n", file);
+  std::fclose(file);
+  ResetScene reset;
+  reset.request.scene = path;
+  ASSERT_TRUE(test::callWithin(sim_, reset, 5.0)) << "~reset of 5 million bricks took over 5 s";
+  expectRefused(reset.response, "a scene over scene_max_bricks");
+  EXPECT_NE(reset.response.message.find("generator 2 (tower) would bring the scene to 200000 "
+                                        "bricks: at most 100000 (scene_max_bricks)"),
+            std::string::npos)
+      << reset.response.message;
+  const std::vector<Brick> after = bricks();
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].id, "keep");
+  EXPECT_EQ(after[0].pose.position.x, before[0].pose.position.x);
+  std::remove(path.c_str());
+}
+
+TEST_F(NodeServices, MessagesCountAndCutWhatTheyRepeat) {
+  ASSERT_TRUE(place("one", 0.1, 0.1, kHalfHeight).success);
+  const client::Reply<GetBricks::Response> got = sim_->getBricks();
+  ASSERT_TRUE(got.reached) << got.message;
+  EXPECT_EQ(got.response.message.rfind("1 brick at t=", 0), 0u) << got.response.message;
+
+  // sim.launch looks in scene_dir and then in the package's scenes/, by
+  // default one directory: it is listed once.
+  ResetScene reset;
+  reset.request.scene = "no_such_scene_5678";
+  expectRefused(call(reset), "unknown scene");
+  const std::string& message = reset.response.message;
+  const std::size_t open = message.find("no_such_scene_5678.yaml in [");
+  ASSERT_NE(open, std::string::npos) << message;
+  EXPECT_EQ(message.find(',', open), std::string::npos) << message;
+
+  // A 10 kB name is cut, not echoed back whole.
+  reset.request.scene = std::string(10240, 'x');
+  expectRefused(call(reset), "a 10 kB scene name");
+  EXPECT_LT(reset.response.message.size(), 1000u) << reset.response.message.size();
+  EXPECT_NE(reset.response.message.find("(10240 characters)"), std::string::npos)
+      << reset.response.message;
+  ASSERT_EQ(bricks().size(), 1u);
+}
+
 TEST_F(NodeServices, ResetPlaysSceneOnTime) {
   std::string scene_path;
   ASSERT_TRUE(ros::NodeHandle("~").getParam("scene_path", scene_path));
