@@ -3,29 +3,18 @@
 checks that it exits non-zero with a message naming that parameter; a control
 run with good parameters must keep running, so the test can tell the two apart."""
 
-import os
 import subprocess
 import time
 import unittest
 
-import rospkg
 import rostest
-from roslib.packages import find_node
-
-PKG = "brick_stack_sim"
+from node_binary import PKG, node_binary_and_data
 
 
 class BadParameters(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        found = find_node(PKG, "brick_stack_sim_node")
-        assert found, "brick_stack_sim_node not built"
-        cls.binary = found[0]
-        share = rospkg.RosPack().get_path(PKG)
-        cls.data = [
-            "_types_urdf:=" + os.path.join(share, "urdf", "bricks.urdf"),
-            "_materials_yaml:=" + os.path.join(share, "config", "bricks.yaml"),
-        ]
+        cls.binary, cls.data = node_binary_and_data()
         cls.runs = 0
 
     def start(self, args):

@@ -20,22 +20,13 @@ import rostest
 from brick_stack_sim.srv import GetBricks, PlaceBrick, ResetScene
 from geometry_msgs.msg import Pose
 from rosgraph_msgs.msg import Log
-from roslib.packages import find_node
-
-PKG = "brick_stack_sim"
+from node_binary import PKG, node_binary_and_data
 
 
 class GraphWarnings(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        found = find_node(PKG, "brick_stack_sim_node")
-        assert found, "brick_stack_sim_node not built"
-        cls.binary = found[0]
-        share = rospkg.RosPack().get_path(PKG)
-        cls.data = [
-            "_types_urdf:=" + os.path.join(share, "urdf", "bricks.urdf"),
-            "_materials_yaml:=" + os.path.join(share, "config", "bricks.yaml"),
-        ]
+        cls.binary, cls.data = node_binary_and_data()
         rospy.init_node("graph_warnings_test")
         cls.lock = threading.Lock()
         cls.warnings = []  # (node name, text) of every WARN on /rosout
