@@ -12,9 +12,9 @@ namespace ros_adapter {
 
 int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.serial); }
 
-int edgeMarkerId(const BrickSnapshot& brick) {
-  return static_cast<int>(brick.serial / kBricksPerEdgeMarker);
-}
+int edgeMarkerId(const BrickSnapshot& brick) { return edgeMarkerId(brick.serial); }
+
+int edgeMarkerId(unsigned serial) { return static_cast<int>(serial / kBricksPerEdgeMarker); }
 
 visualization_msgs::Marker makeEdgeMarker(int id, const std::string& frame_id,
                                           const ros::Time& stamp) {

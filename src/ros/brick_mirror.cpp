@@ -42,6 +42,10 @@ MirroredBrick mirrored(const BrickWorld& world, BrickSnapshot snapshot) {
   return brick;
 }
 
+RemovedBrick removal(const MirroredBrick& brick) {
+  return RemovedBrick{brick.snapshot.id, brick.snapshot.serial};
+}
+
 /// Nothing a subscriber sees of the brick differs.
 bool unchanged(const MirroredBrick& before, const MirroredBrick& now) {
   return sameSnapshot(before.snapshot, now.snapshot) && before.described == now.described &&
@@ -56,7 +60,7 @@ bool unchanged(const MirroredBrick& before, const MirroredBrick& now) {
 /// removed bricks, plus new ones at its end. The mirror is kept in place
 /// (a settled scene moves none of its entries).
 void dropRemoved(const std::vector<unsigned>& serials, std::vector<MirroredBrick>* bricks,
-                 std::vector<MirroredBrick>* removed) {
+                 std::vector<RemovedBrick>* removed) {
   std::size_t kept = 0;
   std::size_t next_serial = 0;
   for (std::size_t i = 0; i < bricks->size(); ++i) {
@@ -67,7 +71,7 @@ void dropRemoved(const std::vector<unsigned>& serials, std::vector<MirroredBrick
       ++kept;
       ++next_serial;
     } else {
-      removed->push_back(std::move((*bricks)[i]));
+      removed->push_back(removal((*bricks)[i]));
     }
   }
   bricks->resize(kept);
@@ -103,8 +107,7 @@ void BrickMirror::adopt(BrickMirror fresh) {
   // The bricks last published go; those of a world adopted and replaced
   // again before any update() were never published.
   if (!adopted_)
-    adopted_removed_.insert(adopted_removed_.end(), std::make_move_iterator(bricks_.begin()),
-                            std::make_move_iterator(bricks_.end()));
+    for (const MirroredBrick& brick : bricks_) adopted_removed_.push_back(removal(brick));
   bricks_ = std::move(fresh.bricks_);
   revision_ = fresh.revision_;
   replaced_ = fresh.replaced_;
@@ -119,8 +122,8 @@ BrickMirror::Changes BrickMirror::update(const BrickWorld& world) {
   std::vector<BrickSnapshot> fresh;
   if (replaced_) {
     fresh = world.snapshot();
-    changes.removed = std::move(bricks_);
-    bricks_.clear();
+    for (const MirroredBrick& brick : bricks_) changes.removed.push_back(removal(brick));
+    bricks_ = {};
     replaced_ = false;
   } else if (world.revision() == revision_) {
     return changes;  // nothing happened: not even a walk over the bricks
@@ -160,8 +163,7 @@ BrickMirror::Changes BrickMirror::adoptedChanges(const BrickWorld& world) {
     dropRemoved(serials, &bricks_, &changes.removed);
     mergeFresh(world, std::move(fresh), &bricks_, &changes);
   }
-  changes.removed.insert(changes.removed.begin(), std::make_move_iterator(adopted_removed_.begin()),
-                         std::make_move_iterator(adopted_removed_.end()));
+  changes.removed.insert(changes.removed.begin(), adopted_removed_.begin(), adopted_removed_.end());
   adopted_removed_.clear();
   changes.changed.resize(bricks_.size());
   for (std::size_t i = 0; i < bricks_.size(); ++i) changes.changed[i] = i;

@@ -51,9 +51,9 @@ void BrickTransforms::publish(const BrickMirror& mirror, const BrickMirror::Chan
     moving_.clear();
     static_due_ = true;
   }
-  for (const MirroredBrick& gone : changes.removed) {
+  for (const RemovedBrick& gone : changes.removed) {
     // Gone while at rest: the static set must lose it.
-    if (moving_.erase(gone.snapshot.serial) == 0) static_due_ = true;
+    if (moving_.erase(gone.serial) == 0) static_due_ = true;
   }
   tf2_msgs::TFMessage moved;
   std::map<unsigned, Moving> still_moving;

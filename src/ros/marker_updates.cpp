@@ -70,13 +70,13 @@ visualization_msgs::MarkerArray MarkerUpdates::delta(const BrickMirror& mirror,
                                                      const ros::Time& stamp) {
   visualization_msgs::MarkerArray array;
   std::set<int> outlines;  // groups to send again
-  for (const MirroredBrick& gone : changes.removed) {
-    const auto shown = shown_.find(gone.snapshot.serial);
+  for (const RemovedBrick& gone : changes.removed) {
+    const auto shown = shown_.find(gone.serial);
     if (shown != shown_.end()) {
       for (const Key& key : shown->second) array.markers.push_back(deletion(key, stamp));
       shown_.erase(shown);
     }
-    outlines.insert(edgeMarkerId(gone.snapshot));
+    outlines.insert(edgeMarkerId(gone.serial));
   }
   for (std::size_t index : changes.changed) {
     const MirroredBrick& brick = mirror.bricks()[index];

@@ -68,7 +68,8 @@ Status SimNode::resetWorld(const std::string& scene_name, const Scene& scene,
       return Status::error("scene '" + shortenForMessage(scene_name, 200) + "': " + ready.message);
     replaced = simulation_->applyReset(std::move(prepared));
     publisher_->adopt(std::move(published));
-    answers_.adopt(std::move(answered));
+    // ~get_bricks reports no removals: it only needs the new world's bricks.
+    answers_ = std::move(answered);
     *message = startNewWorld(scene_name, scene);
   }
   replaced.reset();  // every Bullet body of the old world: no client waits for it

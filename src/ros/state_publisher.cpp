@@ -31,9 +31,8 @@ StatePublisher::StatePublisher(ros::NodeHandle& node_handle, const PublishOption
       simulation_(simulation),
       // The title says which mode runs: two simulators side by side
       // (compare.launch) are told apart at a glance.
-      marker_updates_(options.frame_id,
-                      LegendStyle{"mode " + simulation.options().stability.mode,
-                                  options.legend_scale}),
+      marker_updates_(options.frame_id, LegendStyle{"mode " + simulation.options().stability.mode,
+                                                    options.legend_scale}),
       frames_(options.frame_id, options.frame_prefix) {
   // A new subscriber gets everything at once, alone: with deltas it could
   // not start otherwise, and a viewer that connects while nothing changes
@@ -145,7 +144,7 @@ BrickArray StatePublisher::makeBrickArray(const BrickMirror::Changes* changes,
     return array;
   }
   array.kind = BrickArray::DELTA;
-  for (const MirroredBrick& gone : changes->removed) array.removed.push_back(gone.snapshot.id);
+  for (const RemovedBrick& gone : changes->removed) array.removed.push_back(gone.id);
   for (std::size_t index : changes->changed) {
     const MirroredBrick& brick = bricks[index];
     // One that stopped being finite leaves the subscriber's view, as it

@@ -21,6 +21,8 @@ int brickMarkerId(const BrickSnapshot& brick);
 
 /// The outline marker of a brick: its serial / kBricksPerEdgeMarker.
 int edgeMarkerId(const BrickSnapshot& brick);
+/// The outline marker of the brick with placement serial `serial`.
+int edgeMarkerId(unsigned serial);
 /// An empty outline marker (LINE_LIST, dark, kBrickEdgeWidth) with `id`.
 visualization_msgs::Marker makeEdgeMarker(int id, const std::string& frame_id,
                                           const ros::Time& stamp);

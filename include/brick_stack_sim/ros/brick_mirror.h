@@ -6,6 +6,7 @@
 // ~markers all publish from it.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "brick_stack_sim/Brick.h"
@@ -28,6 +29,14 @@ struct MirroredBrick {
   Brick msg;
 };
 
+/// A brick gone from the world since the mirror last read it: what the
+/// topics need to take it back (its tf frame, its markers, its id on
+/// ~bricks), and no more, since a reset drops thousands at once.
+struct RemovedBrick {
+  std::string id;
+  unsigned serial = 0;
+};
+
 class BrickMirror {
  public:
   /// What one update() found.
@@ -36,8 +45,8 @@ class BrickMirror {
     std::vector<std::size_t> changed;
     /// Of `changed`, those whose pose differs (or that are new).
     std::vector<std::size_t> moved;
-    /// The bricks gone since the last update, as they were then.
-    std::vector<MirroredBrick> removed;
+    /// The bricks gone since the last update.
+    std::vector<RemovedBrick> removed;
     /// The world was replaced (forget() was called): every brick is new.
     bool replaced = false;
   };
@@ -72,7 +81,7 @@ class BrickMirror {
   /// adopt() was called and no update() has followed.
   bool adopted_ = false;
   /// The bricks of the worlds adopt() replaced, for the next update() to report.
-  std::vector<MirroredBrick> adopted_removed_;
+  std::vector<RemovedBrick> adopted_removed_;
 };
 
 }  // namespace ros_adapter
