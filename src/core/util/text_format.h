@@ -60,14 +60,15 @@ inline std::string millijoules(double joules) {
 /// Longest id a message repeats in full [characters]; longer ones are cut.
 constexpr std::size_t kQuotedIdLength = 40;
 
-/// An id as messages show it, in quotes: in full up to kQuotedIdLength
+/// `text` as messages show it, in quotes: in full up to `max_length`
 /// characters, else its start and its length ('abc...' (10240 characters)),
 /// so that a refusal never echoes a huge request back, nor logs it.
-inline std::string quotedId(const std::string& id) {
-  if (id.size() <= kQuotedIdLength) return "'" + id + "'";
-  return "'" + id.substr(0, kQuotedIdLength) + "...' (" + std::to_string(id.size()) +
-         " characters)";
+inline std::string quotedText(const std::string& text, std::size_t max_length) {
+  if (text.size() <= max_length) return "'" + text + "'";
+  return "'" + text.substr(0, max_length) + "...' (" + std::to_string(text.size()) + " characters)";
 }
+/// An id as messages show it: quotedText() up to kQuotedIdLength.
+inline std::string quotedId(const std::string& id) { return quotedText(id, kQuotedIdLength); }
 
 /// Longest path or scene name a message repeats in full [characters].
 constexpr std::size_t kQuotedPathLength = 200;
@@ -80,12 +81,9 @@ inline std::string shortText(const std::string& text, std::size_t max_length = k
   return text.substr(0, max_length) + "... (" + std::to_string(text.size()) + " characters)";
 }
 
-/// A path or scene name as messages show it, in quotes: as quotedId() does
-/// with ids, cut after kQuotedPathLength characters.
+/// A path or scene name as messages show it: quotedText() up to kQuotedPathLength.
 inline std::string quotedPath(const std::string& path) {
-  if (path.size() <= kQuotedPathLength) return "'" + path + "'";
-  return "'" + path.substr(0, kQuotedPathLength) + "...' (" + std::to_string(path.size()) +
-         " characters)";
+  return quotedText(path, kQuotedPathLength);
 }
 
 /// "a, b, c".
