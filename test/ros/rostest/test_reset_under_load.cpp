@@ -103,6 +103,14 @@ TEST_F(ResetUnderLoad, OtherClientsWaitNoLongerThanAStepAndSeeOneSceneWhole) {
   });
   for (int cycle = 0; cycle < 3; ++cycle) {
     resetTo(scene_);
+    // A reset to an empty table takes milliseconds: the reader gets to see
+    // the big scene before it goes, or the check below would depend on luck.
+    waitFor(
+        [&] {
+          std::lock_guard<std::mutex> lock(mutex);
+          return counts.count(kBigScene) > 0;
+        },
+        10.0);
     resetTo("");
   }
   running = false;
