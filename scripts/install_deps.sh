@@ -11,6 +11,8 @@ build_packages=(
   libros-rosgraph-msgs-dev libtf2-ros-dev
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-visualization-msgs
   libbullet-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev coinor-libclp-dev
+  # brick shapes from URDF meshes (STL, OBJ, ...), read as their convex hull
+  libassimp-dev
   googletest libgtest-dev
   libtf2-msgs-dev python3-rospkg python3-roslaunch
   # make test's convention checks: catkin_lint, and the install space driven

@@ -21,14 +21,15 @@ struct Overlapping : public btBroadphaseAabbCallback {
 
 bool BrickDynamicsWorld::sweeps(const btRigidBody& body, const btTransform& predicted) {
   const btScalar threshold = body.getCcdSquareMotionThreshold();
-  return threshold > 0 && body.getCollisionShape()->isConvex() &&
+  const btCollisionShape& shape = *body.getCollisionShape();
+  return threshold > 0 && (shape.isConvex() || shape.isCompound()) &&
          (predicted.getOrigin() - body.getWorldTransform().getOrigin()).length2() > threshold;
 }
 
 bool BrickDynamicsWorld::firstHit(btRigidBody* body, const btTransform& to, Hit* hit) const {
   const btTransform& from = body->getWorldTransform();
   const btVector3 motion = to.getOrigin() - from.getOrigin();
-  const auto& shape = *static_cast<const btConvexShape*>(body->getCollisionShape());
+  const btCollisionShape& shape = *body->getCollisionShape();
   btVector3 low, high;
   shape.getAabb(from, low, high);
   btVector3 swept_low = low, swept_high = high;
@@ -50,15 +51,9 @@ bool BrickDynamicsWorld::firstHit(btRigidBody* body, const btTransform& to, Hit*
       continue;
     btScalar fraction = 1;
     SurfaceGap gap;
-    const btCollisionShape* other_shape = other->getCollisionShape();
-    bool meets = false;
-    if (other_shape->getShapeType() == STATIC_PLANE_PROXYTYPE) {
-      meets = timeOfImpactWithPlane(shape, from, to, *static_cast<const btStaticPlaneShape*>(other_shape),
-                                    other->getWorldTransform(), &fraction, &gap);
-    } else if (other_shape->isConvex()) {
-      meets = timeOfImpact(shape, from, to, *static_cast<const btConvexShape*>(other_shape),
-                           other->getWorldTransform(), kImpactTolerance, &fraction, &gap);
-    }
+    const bool meets =
+        timeOfImpactOfShapes(shape, from, to, *other->getCollisionShape(),
+                             other->getWorldTransform(), kImpactTolerance, &fraction, &gap);
     if (!meets || (found && !(fraction < hit->fraction)) ||
         motion.dot(gap.normal) >= -least_approach)
       continue;

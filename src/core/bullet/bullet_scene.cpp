@@ -32,6 +32,10 @@ struct BulletScene::Impl {
   struct Body {
     std::unique_ptr<btRigidBody> rigid;
     bool in_world = false;
+    /// The centre of mass and principal axes in the type frame: Bullet's
+    /// body frame. Identity (the body frame is the type frame) for a box.
+    Eigen::Isometry3d mass_frame = Eigen::Isometry3d::Identity();
+    bool centred = true;
   };
 
   WorldOptions options;
@@ -41,7 +45,9 @@ struct BulletScene::Impl {
   std::unique_ptr<btCollisionAlgorithmCreateFunc> box_box_algorithm;
   std::unique_ptr<btBroadphaseInterface> broadphase;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
-  std::map<std::string, std::unique_ptr<btBoxShape>> shapes;  // one per brick type
+  std::map<std::string, std::unique_ptr<btCollisionShape>> shapes;  // one per brick type
+  // A compound's children, a hull's shrunk copies: owned apart from the shapes.
+  std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
   std::unique_ptr<btBoxShape> table_shape;
   std::unique_ptr<btStaticPlaneShape> floor_shape;
   std::unique_ptr<btRigidBody> table_body;
@@ -54,7 +60,15 @@ struct BulletScene::Impl {
 
   explicit Impl(const WorldOptions& world_options);
   ~Impl();
-  btBoxShape* shapeFor(const BrickType& type);
+  btCollisionShape* shapeFor(const BrickType& type);
+  /// Bullet's transform of a brick's body for the type frame at `pose`, and back.
+  btTransform toBody(const Body& body, const Eigen::Isometry3d& pose) const {
+    return convertEigenToBt(body.centred ? pose : pose * body.mass_frame);
+  }
+  Eigen::Isometry3d fromBody(const Body& body, const btTransform& transform) const {
+    const Eigen::Isometry3d at = convertBtToEigen(transform);
+    return body.centred ? at : at * body.mass_frame.inverse();
+  }
   Body& body(BodyHandle handle) { return bodies.at(handle); }
   const Body& body(BodyHandle handle) const { return bodies.at(handle); }
   btRigidBody& rigid(BodyHandle handle) { return *body(handle).rigid; }
@@ -135,13 +149,78 @@ BulletScene::Impl::~Impl() {
   world.reset();
 }
 
-btBoxShape* BulletScene::Impl::shapeFor(const BrickType& type) {
-  std::unique_ptr<btBoxShape>& shape = shapes[type.name];
-  if (!shape) {
-    shape = std::make_unique<btBoxShape>(convertEigenToBt(type.halfExtents()));
-    // btBoxShape keeps its outer size and puts the margin inside; Bullet's
-    // 4 cm default would be clamped to 10 % of the half thickness anyway.
-    shape->setMargin(std::min(options.collision_margin, 0.1 * type.halfExtents().minCoeff()));
+namespace {
+
+/// A hull's margin lies outside its points, so it is kept far below the
+/// contact distance: Bullet clips two hulls (or a hull and a box) on their
+/// points, and measures a gap with GJK on points plus margins; both then
+/// agree within it [m].
+constexpr double kHullMargin = 1e-5;
+
+/// A box or a cylinder, in its own frame; Bullet keeps their outer size and
+/// puts the margin inside, so Bullet's 4 cm default would be clamped to 10 %
+/// of the thinnest half size anyway.
+std::unique_ptr<btConvexInternalShape> primitiveShape(const ShapePart& part, double margin) {
+  std::unique_ptr<btConvexInternalShape> shape;
+  double thinnest_half = 0.0;
+  if (part.kind == ShapeKind::kBox) {
+    const Eigen::Vector3d half = 0.5 * part.size;
+    auto box = std::make_unique<btBoxShape>(convertEigenToBt(half));
+    // Box-box pairs take the box clipper; against a hull, Bullet clips
+    // polyhedra only when both have their features.
+    box->setMargin(std::min(margin, 0.1 * half.minCoeff()));
+    box->initializePolyhedralFeatures();
+    shape = std::move(box);
+    thinnest_half = half.minCoeff();
+  } else {
+    shape = std::make_unique<btCylinderShapeZ>(
+        btVector3(part.radius, part.radius, 0.5 * part.length));
+    thinnest_half = std::min(part.radius, 0.5 * part.length);
+  }
+  shape->setMargin(std::min(margin, 0.1 * thinnest_half));
+  return shape;
+}
+
+/// The hull of `polyhedron`'s vertices carried by `placement`.
+std::unique_ptr<btConvexHullShape> hullShape(const ConvexPolyhedron& polyhedron,
+                                             const Eigen::Isometry3d& placement, double margin) {
+  auto hull = std::make_unique<btConvexHullShape>();
+  for (const Eigen::Vector3d& vertex : polyhedron.vertices)
+    hull->addPoint(convertEigenToBt(placement * vertex), false);
+  hull->recalcLocalAabb();
+  hull->setMargin(std::min(margin, kHullMargin));
+  hull->initializePolyhedralFeatures();
+  return hull;
+}
+
+}  // namespace
+
+btCollisionShape* BulletScene::Impl::shapeFor(const BrickType& type) {
+  std::unique_ptr<btCollisionShape>& shape = shapes[type.name];
+  if (shape) return shape.get();
+  const double margin = options.collision_margin;
+  const std::vector<ShapePart>& parts = type.shape.parts;
+  // The body frame is the mass frame: each part sits where the type frame puts it.
+  const Eigen::Isometry3d to_body = type.mass_frame.inverse();
+  std::vector<Eigen::Isometry3d> placements;
+  for (const ConvexPart& part : type.solid->parts) placements.push_back(to_body * part.pose);
+  if (parts.size() == 1 && parts[0].kind == ShapeKind::kConvex) {
+    shape = hullShape(type.solid->parts[0].polyhedron, placements[0], margin);
+  } else if (parts.size() == 1 && placements[0].matrix().isIdentity(1e-12)) {
+    shape = primitiveShape(parts[0], margin);
+  } else {
+    auto compound = std::make_unique<btCompoundShape>(false, static_cast<int>(parts.size()));
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      std::unique_ptr<btCollisionShape> child;
+      if (parts[i].kind == ShapeKind::kConvex) {
+        child = hullShape(type.solid->parts[i].polyhedron, Eigen::Isometry3d::Identity(), margin);
+      } else {
+        child = primitiveShape(parts[i], margin);
+      }
+      compound->addChildShape(convertEigenToBt(placements[i]), child.get());
+      child_shapes.push_back(std::move(child));
+    }
+    shape = std::move(compound);
   }
   return shape.get();
 }
@@ -153,7 +232,10 @@ void BulletScene::addBrick(BodyHandle handle, const BrickType& type,
                            const BrickPlacement& placement) {
   btRigidBody::btRigidBodyConstructionInfo info(type.mass, nullptr, impl_->shapeFor(type),
                                                 convertEigenToBt(type.inertia));
-  info.m_startWorldTransform = convertEigenToBt(placement.pose);
+  Impl::Body& record = impl_->bodies[handle];
+  record.mass_frame = type.mass_frame;
+  record.centred = type.mass_frame.matrix().isIdentity(0.0);
+  info.m_startWorldTransform = impl_->toBody(record, placement.pose);
   info.m_friction = type.friction;
   info.m_rollingFriction = type.rolling_friction;
   info.m_restitution = type.restitution;
@@ -167,12 +249,12 @@ void BulletScene::addBrick(BodyHandle handle, const BrickType& type,
   // way out is through it: it sweeps its own shape along the step instead
   // (BrickDynamicsWorld). Slower, the discrete contact is cheaper and as
   // good. Bullet's swept sphere is not used.
-  const double thinnest_half = type.halfExtents().minCoeff();
+  const double thinnest_half = type.thinnestHalfWidth();
   body->setCcdMotionThreshold(thinnest_half);
   body->setCcdSweptSphereRadius(0.5 * thinnest_half);
   if (!impl_->options.sleeping.enabled) body->setActivationState(DISABLE_DEACTIVATION);
   body->setUserIndex(static_cast<int>(handle));
-  impl_->bodies[handle].rigid = std::move(body);
+  record.rigid = std::move(body);
   addToWorld(handle);
 }
 
@@ -249,7 +331,8 @@ void BulletScene::activate(BodyHandle handle) { impl_->rigid(handle).activate(tr
 bool BulletScene::isActive(BodyHandle handle) const { return impl_->rigid(handle).isActive(); }
 
 Eigen::Isometry3d BulletScene::pose(BodyHandle handle) const {
-  return convertBtToEigen(impl_->rigid(handle).getWorldTransform());
+  const Impl::Body& body = impl_->body(handle);
+  return impl_->fromBody(body, body.rigid->getWorldTransform());
 }
 
 Eigen::Vector3d BulletScene::centreOfMass(BodyHandle handle) const {
@@ -281,7 +364,7 @@ void BulletScene::bounds(BodyHandle handle, Eigen::Vector3d* low, Eigen::Vector3
 
 void BulletScene::restoreAtRest(BodyHandle handle, const Eigen::Isometry3d& pose) {
   btRigidBody& body = impl_->rigid(handle);
-  const btTransform transform = convertEigenToBt(pose);
+  const btTransform transform = impl_->toBody(impl_->body(handle), pose);
   body.setWorldTransform(transform);
   body.setInterpolationWorldTransform(transform);
   body.setLinearVelocity(btVector3(0, 0, 0));
@@ -306,7 +389,7 @@ void BulletScene::setVelocity(BodyHandle handle, const Eigen::Vector3d& linear,
 void BulletScene::moveKinematic(BodyHandle handle, const Eigen::Isometry3d& pose) {
   // Bullet's saveKinematicState takes the velocity from the interpolation
   // transform (where it was) to the world transform (where it goes).
-  impl_->rigid(handle).setWorldTransform(convertEigenToBt(pose));
+  impl_->rigid(handle).setWorldTransform(impl_->toBody(impl_->body(handle), pose));
 }
 
 void BulletScene::moveStatic(BodyHandle handle, const Eigen::Isometry3d& pose) {
@@ -320,10 +403,8 @@ bool BulletScene::closestPoints(BodyHandle a, const Eigen::Isometry3d& pose_a, B
   const btRigidBody* body_b = impl_->bodyOrTable(b);
   if (!body_a || !body_b) return false;
   SurfaceGap gap;
-  if (!surfaceGap(*static_cast<const btConvexShape*>(body_a->getCollisionShape()),
-                  convertEigenToBt(pose_a),
-                  *static_cast<const btConvexShape*>(body_b->getCollisionShape()),
-                  body_b->getWorldTransform(), &gap))
+  if (!surfaceGapOfShapes(*body_a->getCollisionShape(), impl_->toBody(impl_->body(a), pose_a),
+                          *body_b->getCollisionShape(), body_b->getWorldTransform(), &gap))
     return false;
   points->normal = convertBtToEigen(gap.normal);
   points->distance = gap.distance;
@@ -338,10 +419,10 @@ bool BulletScene::firstContact(BodyHandle a, const Eigen::Isometry3d& from,
   if (!body_a || !body_b) return false;
   btScalar at = 1;
   SurfaceGap gap;
-  if (!timeOfImpact(*static_cast<const btConvexShape*>(body_a->getCollisionShape()),
-                    convertEigenToBt(from), convertEigenToBt(to),
-                    *static_cast<const btConvexShape*>(body_b->getCollisionShape()),
-                    body_b->getWorldTransform(), kImpactTolerance, &at, &gap))
+  const Impl::Body& moving = impl_->body(a);
+  if (!timeOfImpactOfShapes(*body_a->getCollisionShape(), impl_->toBody(moving, from),
+                            impl_->toBody(moving, to), *body_b->getCollisionShape(),
+                            body_b->getWorldTransform(), kImpactTolerance, &at, &gap))
     return false;
   *fraction = at;
   return true;

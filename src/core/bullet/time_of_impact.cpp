@@ -72,4 +72,69 @@ bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, cons
   return true;
 }
 
+std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btCollisionShape& shape,
+                                                                       const btTransform& at) {
+  std::vector<std::pair<const btConvexShape*, btTransform>> pieces;
+  if (shape.isConvex()) {
+    pieces.emplace_back(static_cast<const btConvexShape*>(&shape), at);
+  } else if (shape.isCompound()) {
+    const auto& compound = static_cast<const btCompoundShape&>(shape);
+    for (int i = 0; i < compound.getNumChildShapes(); ++i)
+      if (compound.getChildShape(i)->isConvex())
+        pieces.emplace_back(static_cast<const btConvexShape*>(compound.getChildShape(i)),
+                            at * compound.getChildTransform(i));
+  }
+  return pieces;
+}
+
+bool surfaceGapOfShapes(const btCollisionShape& a, const btTransform& at_a,
+                        const btCollisionShape& b, const btTransform& at_b, SurfaceGap* gap) {
+  bool found = false;
+  for (const auto& [piece_a, place_a] : convexPieces(a, at_a)) {
+    for (const auto& [piece_b, place_b] : convexPieces(b, at_b)) {
+      SurfaceGap candidate;
+      if (!surfaceGap(*piece_a, place_a, *piece_b, place_b, &candidate)) continue;
+      if (!found || candidate.distance < gap->distance) *gap = candidate;
+      found = true;
+    }
+  }
+  return found;
+}
+
+bool timeOfImpactOfShapes(const btCollisionShape& a, const btTransform& from,
+                          const btTransform& to, const btCollisionShape& b,
+                          const btTransform& at_b, btScalar tolerance, btScalar* fraction,
+                          SurfaceGap* gap) {
+  // The pieces of a keep their places in a while a translates.
+  const btTransform moved = to * from.inverse();
+  bool found = false;
+  for (const auto& [piece_a, start] : convexPieces(a, from)) {
+    const btTransform end = a.isConvex() ? to : moved * start;
+    btScalar at = 1;
+    SurfaceGap candidate;
+    bool meets = false;
+    if (b.getShapeType() == STATIC_PLANE_PROXYTYPE) {
+      meets = timeOfImpactWithPlane(*piece_a, start, end, static_cast<const btStaticPlaneShape&>(b),
+                                    at_b, &at, &candidate);
+    } else {
+      for (const auto& [piece_b, place_b] : convexPieces(b, at_b)) {
+        btScalar piece_at = 1;
+        SurfaceGap piece_gap;
+        if (!timeOfImpact(*piece_a, start, end, *piece_b, place_b, tolerance, &piece_at,
+                          &piece_gap) ||
+            (meets && !(piece_at < at)))
+          continue;
+        at = piece_at;
+        candidate = piece_gap;
+        meets = true;
+      }
+    }
+    if (!meets || (found && !(at < *fraction))) continue;
+    *fraction = at;
+    *gap = candidate;
+    found = true;
+  }
+  return found;
+}
+
 }  // namespace brick_stack_sim

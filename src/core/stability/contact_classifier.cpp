@@ -72,14 +72,14 @@ SupporterTest frozenOrGround(const SupportGraph& graph) {
   return [&graph](BodyHandle handle) { return graph.canSupport(handle); };
 }
 
-void refineFlushPatches(const std::function<OrientedBox(BodyHandle)>& box_of,
+void refineFlushPatches(const std::function<PlacedSolid(BodyHandle)>& solid_of,
                         const StabilityOptions& options, std::vector<PairContact>* contacts) {
   const double vertical = std::cos(options.support_normal_tolerance);
   for (PairContact& pair : *contacts) {
     if (std::abs(pair.normal.z()) < vertical) continue;
     const bool b_below = pair.normal.z() > 0.0;
     std::vector<Eigen::Vector3d> patch;
-    if (flushContactPatch(box_of(b_below ? pair.b : pair.a), box_of(b_below ? pair.a : pair.b),
+    if (flushContactPatch(solid_of(b_below ? pair.b : pair.a), solid_of(b_below ? pair.a : pair.b),
                           options.flush_angle, options.contact_distance, &patch))
       pair.points = std::move(patch);
   }

@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "stability/stability_model.h"
 
 namespace brick_stack_sim {
@@ -48,8 +48,8 @@ SupporterTest frozenOrGround(const SupportGraph& graph);
 /// their exact overlap rather than the points Bullet kept: its box-box
 /// clipper keeps only penetrating points, so a brick tilted by a
 /// micro-radian reports half its patch. Applied to the contacts whose normal
-/// is within `support_normal_tolerance` of vertical; `box_of` gives a body's box.
-void refineFlushPatches(const std::function<OrientedBox(BodyHandle)>& box_of,
+/// is within `support_normal_tolerance` of vertical; `solid_of` gives a body's solid.
+void refineFlushPatches(const std::function<PlacedSolid(BodyHandle)>& solid_of,
                         const StabilityOptions& options, std::vector<PairContact>* contacts);
 
 }  // namespace brick_stack_sim

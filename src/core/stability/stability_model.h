@@ -117,6 +117,10 @@ struct StabilityInput {
   /// null when there are none to tell.
   const std::vector<PairContact>* contacts = nullptr;
   std::vector<RestingPlacement> placed;  ///< Bricks just placed at rest.
+  /// More bricks are being placed at this instant: the structure is judged
+  /// as a whole once the last is in, not half-built (an arch's half-ring
+  /// cannot stand alone).
+  bool more_to_come = false;
   std::vector<BodyHandle> removed;       ///< Bricks that left the world.
   /// Bricks taken into a hand (grasped): out of the stack, still in the world.
   std::vector<BodyHandle> grasped;

@@ -97,7 +97,7 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
   if (input.dt > 0.0 && input.contacts) measureLoads(input);
   advanceMovers(input, decisions);
   applyLoads();
-  settle(&graph_, &rest_, decisions);
+  if (!input.more_to_come) settle(&graph_, &rest_, decisions);
 }
 
 bool StackStabilityModel::moves(BodyHandle body) const {

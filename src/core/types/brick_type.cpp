@@ -1,14 +1,11 @@
 #include "brick_stack_sim/core/types/brick_type.h"
 
 #include <cmath>
-#include <fstream>
-#include <memory>
-#include <sstream>
 
-#include <urdf_parser/urdf_parser.h>
+#include <Eigen/Eigenvalues>
 
-#include "brick_stack_sim/core/options/options_reader.h"
-#include "brick_stack_sim/core/options/yaml_parameters.h"
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "types/inertial.h"
 
 namespace brick_stack_sim {
 
@@ -16,73 +13,82 @@ namespace {
 
 bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
 
-Status readFile(const std::string& path, const char* what, std::string* text) {
-  std::ifstream file(path);
-  if (!file) return Status::error(std::string("cannot read ") + what + " '" + path + "'");
-  std::ostringstream buffer;
-  buffer << file.rdbuf();
-  *text = buffer.str();
-  return Status::success();
+/// A box of `size` centred on the type frame, as every type was before
+/// shapes: its inertia keeps the closed form's bits.
+bool isCentredBox(const BrickShape& shape) {
+  return shape.kind == ShapeKind::kBox && shape.parts.size() == 1 &&
+         shape.parts[0].pose.matrix().isIdentity(0.0);
 }
 
-/// Friction and restitution of one section of the materials over `*type`;
-/// a key it does not know is an error.
-Status readMaterial(OptionsReader& reader, BrickType* type) {
-  BrickType material = *type;
-  reader.read("friction", &material.friction);
-  reader.read("restitution", &material.restitution);
-  reader.read("rolling_friction", &material.rolling_friction);
-  if (Status read = reader.finish(); !read) return read;
-  *type = material;
-  return Status::success();
-}
-
-// BrickTypeLibrary::parse's steps, link by link and then over the materials.
-
-/// The box a link is drawn as: its collision geometry's, else its visual
-/// one's; null when that is no box.
-urdf::BoxSharedPtr boxOf(const urdf::Link& link) {
-  urdf::GeometrySharedPtr geometry;
-  if (link.collision) geometry = link.collision->geometry;
-  if (!geometry && link.visual) geometry = link.visual->geometry;
-  return std::dynamic_pointer_cast<urdf::Box>(geometry);
-}
-
-/// The brick type of a link drawn as `box`: size, mass and inertia from the
-/// URDF; friction, restitution and rolling friction from `defaults`, over
-/// which its own section of `own_materials` (when it has one) is read.
-Status brickTypeOfLink(const urdf::Link& link, const urdf::Box& box, const BrickType& defaults,
-                       const ParameterValue* own_materials, BrickType* type) {
-  if (!link.inertial) return Status::error("link '" + link.name + "' has no <inertial>");
-  *type = defaults;
-  type->name = link.name;
-  type->size = Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z);
-  type->mass = link.inertial->mass;
-  type->inertia = Eigen::Vector3d(link.inertial->ixx, link.inertial->iyy, link.inertial->izz);
-  const double off_diagonal =
-      std::abs(link.inertial->ixy) + std::abs(link.inertial->ixz) + std::abs(link.inertial->iyz);
-  if (off_diagonal > 1e-9 * type->inertia.cwiseAbs().sum())
-    return Status::error("link '" + link.name +
-                         "': inertia must be diagonal in the box frame (a uniform box)");
-  if (const ParameterValue* own = own_materials ? own_materials->find(type->name) : nullptr) {
-    OptionsReader own_reader(*own, "types/" + type->name + "/");
-    if (Status read = readMaterial(own_reader, type); !read)
-      return prefixed("brick materials yaml: ", read);
+/// Principal moments and axes (a proper rotation) of a symmetric tensor; a
+/// diagonal one keeps its axes and its bits.
+void principalAxes(const Eigen::Matrix3d& tensor, Eigen::Vector3d* moments, Eigen::Matrix3d* axes) {
+  if (Eigen::Matrix3d(tensor.diagonal().asDiagonal()) == tensor) {
+    *moments = tensor.diagonal();
+    axes->setIdentity();
+    return;
   }
-  return Status::success();
-}
-
-/// A material section for a type the URDF does not define is a typo, not
-/// something to ignore.
-Status materialsNameKnownTypes(const ParameterValue* own_materials, const BrickTypeLibrary& types) {
-  if (!own_materials) return Status::success();
-  for (const auto& [name, material] : own_materials->map())
-    if (!types.find(name))
-      return Status::error("materials name type '" + name + "' that the URDF does not define");
-  return Status::success();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(tensor);
+  *moments = solver.eigenvalues();
+  *axes = solver.eigenvectors();
+  if (axes->determinant() < 0.0) axes->col(2) = -axes->col(2);
 }
 
 }  // namespace
+
+bool BrickType::isBox() const { return isCentredBox(shape); }
+
+double BrickType::reachFromCentreOfMass() const {
+  if (isBox() || !solid) return halfExtents().norm();
+  return radiusAbout(*solid, mass_frame.translation());
+}
+
+double BrickType::thinnestHalfWidth() const {
+  if (isBox() || !solid) return halfExtents().minCoeff();
+  return brick_stack_sim::thinnestHalfWidth(*solid);
+}
+
+Status finishBrickType(BrickType* type, bool inertia_given) {
+  const std::string name = "brick type '" + type->name + "'";
+  if (type->shape.parts.empty()) type->shape = boxShape(type->size);
+  auto solid = std::make_shared<ConvexSolid>();
+  ShapeMass shape_mass;
+  if (Status built = buildShape(type->shape, solid.get(), &shape_mass); !built)
+    return Status::error(name + ": " + built.message);
+  if (!isCentredBox(type->shape)) {
+    type->size = shapeBounds(type->shape, *solid).sizes();
+  } else {
+    type->size = type->shape.parts[0].size;
+  }
+  if (!inertia_given) {
+    if (isCentredBox(type->shape)) {
+      // A uniform box: m/12 (b^2 + c^2) about each axis.
+      const Eigen::Vector3d squared = type->size.cwiseProduct(type->size);
+      type->inertia = type->mass / 12.0 *
+                      Eigen::Vector3d(squared.y() + squared.z(), squared.x() + squared.z(),
+                                      squared.x() + squared.y());
+      type->mass_frame.setIdentity();
+    } else {
+      Eigen::Matrix3d axes;
+      principalAxes(type->mass * shape_mass.inertia, &type->inertia, &axes);
+      type->mass_frame.linear() = axes;
+      type->mass_frame.translation() = shape_mass.centroid;
+    }
+  }
+  type->solid = std::move(solid);
+  return validateBrickType(*type);
+}
+
+Status inertialFrame(const Eigen::Isometry3d& origin, const Eigen::Matrix3d& tensor,
+                     Eigen::Vector3d* moments, Eigen::Isometry3d* mass_frame) {
+  if (!tensor.allFinite() || !origin.matrix().allFinite())
+    return Status::error("inertia and its origin must be finite");
+  Eigen::Matrix3d axes;
+  principalAxes(tensor, moments, &axes);
+  *mass_frame = origin;
+  mass_frame->linear() = origin.linear() * axes;
+  return Status::success();
+}
 
 Status validateBrickType(const BrickType& t) {
   const std::string name = "brick type '" + t.name + "'";
@@ -90,6 +96,8 @@ Status validateBrickType(const BrickType& t) {
   if (!positiveFinite(t.size.x()) || !positiveFinite(t.size.y()) || !positiveFinite(t.size.z()))
     return Status::error(name + ": size must be positive and finite in x, y and z");
   if (!positiveFinite(t.mass)) return Status::error(name + ": mass must be positive and finite");
+  if (!t.mass_frame.matrix().allFinite() || !isRotation(t.mass_frame.linear()))
+    return Status::error(name + ": centre of mass and principal axes must be finite");
   const Eigen::Vector3d& i = t.inertia;
   if (!positiveFinite(i.x()) || !positiveFinite(i.y()) || !positiveFinite(i.z()))
     return Status::error(name + ": principal inertia must be positive and finite");
@@ -108,9 +116,13 @@ Status validateBrickType(const BrickType& t) {
   return Status::success();
 }
 
-Status BrickTypeLibrary::add(const BrickType& type) {
+Status BrickTypeLibrary::add(BrickType type) {
+  if (!type.solid) {
+    if (Status finished = finishBrickType(&type, true); !finished) return finished;
+  }
   if (Status valid = validateBrickType(type); !valid) return valid;
-  types_[type.name] = type;
+  const std::string name = type.name;
+  types_[name] = std::move(type);
   if (default_type_.empty()) default_type_ = types_.begin()->first;
   return Status::success();
 }
@@ -129,64 +141,6 @@ std::vector<std::string> BrickTypeLibrary::names() const {
 Status BrickTypeLibrary::setDefaultType(const std::string& name) {
   if (!find(name)) return Status::error("default brick type '" + name + "' is not a known type");
   default_type_ = name;
-  return Status::success();
-}
-
-Status BrickTypeLibrary::load(const std::string& urdf_path, const std::string& materials_path,
-                              BrickTypeLibrary* library) {
-  std::string urdf_xml, materials_yaml;
-  if (Status read = readFile(urdf_path, "brick type URDF", &urdf_xml); !read) return read;
-  if (!materials_path.empty()) {
-    if (Status read = readFile(materials_path, "brick materials yaml", &materials_yaml); !read)
-      return read;
-  }
-  Status parsed = parse(urdf_xml, materials_yaml, library);
-  if (!parsed) parsed.message = urdf_path + ": " + parsed.message;
-  return parsed;
-}
-
-Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& materials_yaml,
-                               BrickTypeLibrary* library) {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model) return Status::error("not a valid URDF");
-
-  ParameterValue materials;
-  if (!materials_yaml.empty()) {
-    if (Status parsed = parseYamlParameters(materials_yaml, "brick materials yaml", &materials);
-        !parsed)
-      return parsed;
-  }
-  OptionsReader reader(materials);
-  BrickType defaults;
-  reader.section("default", &readMaterial, &defaults);
-  std::string default_type;
-  reader.read("default_type", &default_type);
-  // One section per type, named by the URDF: read below, type by type.
-  const ParameterValue* own_materials = materials.find("types");
-  reader.skip("types");
-  if (Status read = reader.finish(); !read) return prefixed("brick materials yaml: ", read);
-  if (own_materials && !own_materials->isMap())
-    return Status::error("brick materials yaml: types is " + own_materials->describe() +
-                         ", expected a map of type: {friction, restitution, rolling_friction}");
-
-  BrickTypeLibrary result;
-  for (const auto& entry : model->links_) {
-    const urdf::Link& link = *entry.second;
-    // Links without a box (a root that only ties the types together) are not bricks.
-    const urdf::BoxSharedPtr box = boxOf(link);
-    if (!box) continue;
-    BrickType type;
-    if (Status read = brickTypeOfLink(link, *box, defaults, own_materials, &type); !read)
-      return read;
-    if (Status added = result.add(type); !added) return added;
-  }
-  if (result.empty()) return Status::error("the URDF has no link with a box geometry");
-
-  if (Status known = materialsNameKnownTypes(own_materials, result); !known) return known;
-  if (!default_type.empty()) {
-    if (Status set = result.setDefaultType(default_type); !set) return set;
-  }
-  *library = std::move(result);
   return Status::success();
 }
 

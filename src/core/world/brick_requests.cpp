@@ -27,7 +27,44 @@ Status BrickWorld::checkPlacement(const BrickPlacement& placement) const {
 }
 
 Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assigned_id) {
-  if (Status ok = checkPlacement(placement); !ok) return ok;
+  std::vector<std::string> ids;
+  const Status placed = addBricks({placement}, &ids).front();
+  if (placed && assigned_id) *assigned_id = ids.front();
+  return placed;
+}
+
+std::vector<Status> BrickWorld::addBricks(const std::vector<BrickPlacement>& placements,
+                                          std::vector<std::string>* assigned_ids) {
+  WorldState& w = *state_;
+  std::vector<Status> statuses;
+  if (assigned_ids) assigned_ids->assign(placements.size(), std::string());
+  bool judged_whole = true;  // the last judgement saw the structure complete
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const BrickPlacement& placement = placements[i];
+    statuses.push_back(checkPlacement(placement));
+    if (!statuses.back()) continue;
+    BrickRecord* brick = placeBody(placement);
+    if (assigned_ids) (*assigned_ids)[i] = brick->id;
+    if (!w.model || !placement.linear_velocity.isZero() || !placement.angular_velocity.isZero())
+      continue;
+    Eigen::Vector3d low, high;
+    w.scene.bounds(brick->handle, &low, &high);
+    StabilityInput input;
+    input.placed.push_back(
+        {BodyMotion{brick->handle, centreOfMassAt(brick->type, placement.pose), brick->type.mass,
+                    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+         restingContacts(w, brick->handle, brick->type.friction, w.solidOf(brick->handle), low,
+                         high)});
+    input.more_to_come = i + 1 < placements.size();
+    judged_whole = !input.more_to_come;
+    decide(&w, input);
+    if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
+  }
+  if (w.model && !judged_whole) decide(&w, StabilityInput());
+  return statuses;
+}
+
+BrickRecord* BrickWorld::placeBody(const BrickPlacement& placement) {
   WorldState& w = *state_;
   w.recordChange(WorldState::Change::kModel);
   auto record = std::make_unique<BrickRecord>();
@@ -41,21 +78,8 @@ Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assign
   BrickRecord* brick = w.bricks.add(std::move(record));
   w.emit(SimEventKind::kSpawned, brick->id,
          "placed as '" + brick->type.name + "' at " + formatVector(placement.pose.translation()));
-  if (assigned_id) *assigned_id = brick->id;
   w.sets.enter(brick);
-  if (w.model && placement.linear_velocity.isZero() && placement.angular_velocity.isZero()) {
-    Eigen::Vector3d low, high;
-    w.scene.bounds(brick->handle, &low, &high);
-    StabilityInput input;
-    input.placed.push_back(
-        {BodyMotion{brick->handle, placement.pose.translation(), brick->type.mass,
-                    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-         restingContacts(w, brick->handle, brick->type.friction, w.boxOf(brick->handle), low,
-                         high)});
-    decide(&w, input);
-    if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
-  }
-  return Status::success();
+  return brick;
 }
 
 Status BrickWorld::removeBrick(const std::string& id) {
@@ -106,7 +130,7 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   if (brick->mode == BrickMode::kHeld)
     return Status::error("brick " + quotedId(id) + " is held: move it through the held target");
   const BodyHandle h = brick->handle;
-  const double outside = (point - nearestPointIn(w.boxOf(h), point)).norm();
+  const double outside = (point - nearestPointIn(w.solidOf(h), point)).norm();
   if (outside > kPushPointTolerance)
     return Status::error("point of application " + formatVector(point) + " is " +
                          millimetres(outside) + " outside brick " + quotedId(id) + " (at most " +
@@ -114,7 +138,8 @@ Status BrickWorld::applyImpulse(const std::string& id, const Eigen::Vector3d& im
   // The speeds the push leaves the brick with, before Bullet sees it: a push
   // that would launch it past the placement limits is refused, not repaired.
   const Eigen::Vector3d lever = point - w.scene.centreOfMass(h);
-  const Eigen::Matrix3d rotation = w.scene.pose(h).linear();
+  // The principal axes turn with the brick: its pose times its mass frame's.
+  const Eigen::Matrix3d rotation = w.scene.pose(h).linear() * brick->type.mass_frame.linear();
   const Eigen::Matrix3d inverse_inertia =
       rotation * brick->type.inertia.cwiseInverse().asDiagonal() * rotation.transpose();
   const bool frozen = isFrozen(brick->mode);
@@ -174,7 +199,7 @@ Status BrickWorld::setHeldTarget(const Eigen::Isometry3d& target) {
   WorldState& w = *state_;
   if (w.sets.held().empty()) return Status::error("no brick is held: grasp one first");
   BrickRecord* brick = w.sets.held().front();
-  if (Status pose = checkPose(w, target, brick->type.halfExtents(), "target "); !pose) return pose;
+  if (Status pose = checkPose(w, target, brick->type, "target "); !pose) return pose;
   w.recordChange(WorldState::Change::kBricks);
   brick->held_target = target;
   return Status::success();
@@ -208,12 +233,12 @@ Status BrickWorld::evaluatePlacement(const BrickPlacement& placement,
   if (Status ok = checkPlacement(placement); !ok) return ok;
   const BrickType& type =
       *w.types.find(placement.type.empty() ? w.types.defaultType() : placement.type);
-  const OrientedBox box{placement.pose, type.halfExtents()};
+  const PlacedSolid box = type.placed(placement.pose);
   const Eigen::AlignedBox3d extent = bounds(box);
   // A handle no brick has yet: the one this brick would get.
   const BodyHandle handle = w.next_serial;
-  const BodyMotion brick{handle, placement.pose.translation(), type.mass, Eigen::Vector3d::Zero(),
-                         Eigen::Vector3d::Zero()};
+  const BodyMotion brick{handle, centreOfMassAt(type, placement.pose), type.mass,
+                         Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   PlacementReport result;
   const StaticsVerdict statics = judgeAlone(
       brick, touchingBricks(w, handle, type.friction, box, extent.min(), extent.max()), w);

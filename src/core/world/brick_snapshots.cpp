@@ -27,6 +27,7 @@ BrickSnapshot snapshotOf(const WorldState& w, const BrickRecord& brick) {
   s.linear_velocity = w.scene.linearVelocity(brick.handle);
   s.angular_velocity = w.scene.angularVelocity(brick.handle);
   s.size = brick.type.size;
+  s.solid = brick.type.solid;
   s.mass = brick.type.mass;
   s.state = toState(brick.mode);
   s.asleep = brick.mode == BrickMode::kDynamic && !w.scene.isActive(brick.handle);

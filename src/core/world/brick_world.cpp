@@ -52,7 +52,7 @@ void prepareFrozenColliders(WorldState* w) {
   for (const BrickRecord* mover : w->sets.movers()) {
     fastest = std::max(fastest,
                        w->scene.linearSpeed(mover->handle) +
-                           w->scene.angularSpeed(mover->handle) * mover->type.halfExtents().norm());
+                           w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass());
   }
   const double dt = w->options.time_step;
   const double travel = (2.0 * fastest + w->options.gravity * dt) * dt + kColliderMargin;
@@ -91,7 +91,7 @@ void readStepContacts(WorldState* w) {
     return;
   }
   readContacts(w->scene, rest.contact_distance, &w->contacts);
-  refineFlushPatches([w](BodyHandle handle) { return w->boxOf(handle); }, rest, &w->contacts);
+  refineFlushPatches([w](BodyHandle handle) { return w->solidOf(handle); }, rest, &w->contacts);
   w->contacts.insert(w->contacts.end(), w->presses.begin(), w->presses.end());
 }
 

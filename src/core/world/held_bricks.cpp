@@ -75,7 +75,7 @@ void pushOut(const WorldState& w, const BrickRecord& held, const std::vector<Bod
       if (!isGround(obstacle) && !known) stops->push_back(Stop{obstacle, nearest.normal});
     }
     // The floor is a plane: nothing may sink below it.
-    const double lowest = bounds(OrientedBox{*pose, held.type.halfExtents()}).min().z();
+    const double lowest = bounds(held.type.placed(*pose)).min().z();
     const double floor = -w.options.table.height;
     if (lowest < floor) {
       pose->translation().z() += floor - lowest;
@@ -98,7 +98,7 @@ void pressOn(const WorldState& w, const BrickRecord& held, const Eigen::Isometry
   const double force = std::min(hand.stiffness * beyond, hand.max_force);
   if (!(force > kLeastPress)) return;
   std::vector<PairContact> touching;
-  appendContacts(w, held.handle, held.type.friction, OrientedBox{pose, held.type.halfExtents()},
+  appendContacts(w, held.handle, held.type.friction, held.type.placed(pose),
                  stop.brick, true, &touching);
   std::vector<Eigen::Vector3d> points;
   for (const PairContact& contact : touching)
@@ -141,8 +141,8 @@ void moveHeldBricks(WorldState* w) {
     const Eigen::Isometry3d from = w->scene.pose(brick->handle);
     if (w->model) {
       // All it passes on the way, not just where it ends.
-      Eigen::AlignedBox3d reach = bounds(OrientedBox{to, brick->type.halfExtents()});
-      reach.extend(bounds(OrientedBox{from, brick->type.halfExtents()}));
+      Eigen::AlignedBox3d reach = bounds(brick->type.placed(to));
+      reach.extend(bounds(brick->type.placed(from)));
       const Eigen::Vector3d margin =
           Eigen::Vector3d::Constant(w->options.stability.contact_distance);
       near = w->dormant.near(reach.min() - margin, reach.max() + margin);

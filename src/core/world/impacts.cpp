@@ -28,16 +28,9 @@ double restitutionOf(const WorldState& w, BodyHandle handle) {
   return isGround(handle) ? w.options.table.restitution : w.bricks.find(handle)->type.restitution;
 }
 
-/// The interval [low, high] of `box` projected on the unit `axis` [m].
-Eigen::Vector2d extentAlong(const OrientedBox& box, const Eigen::Vector3d& axis) {
-  const double centre = box.pose.translation().dot(axis);
-  const double reach = projectedRadius(box, axis);
-  return Eigen::Vector2d(centre - reach, centre + reach);
-}
-
 /// How much two boxes overlap across the plane with `normal`, the less of
 /// the two directions in it [m].
-double overlapAcross(const OrientedBox& a, const OrientedBox& b, const Eigen::Vector3d& normal) {
+double overlapAcross(const PlacedSolid& a, const PlacedSolid& b, const Eigen::Vector3d& normal) {
   const Eigen::Vector3d first = normal.unitOrthogonal();
   double least = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& axis : {first, normal.cross(first)}) {
@@ -50,7 +43,7 @@ double overlapAcross(const OrientedBox& a, const OrientedBox& b, const Eigen::Ve
 
 /// Whether `brick` at `box` would sink into any brick but itself and `except`.
 bool overlapsOthers(const WorldState& w, BodyHandle brick, BodyHandle except,
-                    const OrientedBox& box) {
+                    const PlacedSolid& box) {
   const Eigen::AlignedBox3d extent = bounds(box);
   std::vector<BodyHandle> others = w.dormant.near(extent.min(), extent.max());
   for (const BrickRecord* mover : w.sets.movers()) others.push_back(mover->handle);
@@ -58,7 +51,7 @@ bool overlapsOthers(const WorldState& w, BodyHandle brick, BodyHandle except,
   others.push_back(kTableHandle);
   for (BodyHandle other : others) {
     if (other == brick || other == except) continue;
-    if (separation(box, w.boxOf(other)) < -w.options.overlap_tolerance) return true;
+    if (separation(box, w.solidOf(other)) < -w.options.overlap_tolerance) return true;
   }
   return false;
 }
@@ -69,7 +62,7 @@ bool overlapsOthers(const WorldState& w, BodyHandle brick, BodyHandle except,
 bool slideFrozen(WorldState* w, BrickRecord* brick, BodyHandle striker,
                  const Eigen::Vector3d& slide) {
   const Eigen::Isometry3d start = w->scene.pose(brick->handle);
-  OrientedBox box{start, brick->type.halfExtents()};
+  PlacedSolid box = brick->type.placed(start);
   Eigen::Vector3d offset = slide;
   for (int halving = 0;; ++halving) {
     box.pose.translation() = start.translation() + offset;
@@ -109,7 +102,7 @@ double firstContactOnTheWay(const WorldState& w, const Striker& striker,
   if (!record) return 1.0;
   // As the engine's continuous collision (BrickDynamicsWorld): swept past
   // half its thickness a step, meeting what it closes on by half that.
-  const double sweep = record->type.halfExtents().minCoeff();
+  const double sweep = record->type.thinnestHalfWidth();
   const Eigen::Vector3d travel = striker.pose.translation() - from.translation();
   double fraction = 1.0;
   if (travel.norm() <= sweep ||
@@ -130,17 +123,18 @@ bool findImpact(const WorldState& w, const Striker& striker, BodyHandle struck, 
   if (!w.scene.closestPoints(striker.handle, striker.pose, struck, &nearest)) return false;
   // GJK's witness of two flush faces is any corner of their overlap; the
   // blow acts nearer the striker's centre, on the struck brick's surface.
-  const Eigen::Vector3d centre = striker.pose.translation();
+  const BrickType& striker_type = w.bricks.find(striker.handle)->type;
+  const Eigen::Vector3d centre = centreOfMassAt(striker_type, striker.pose);
   const Eigen::Vector3d on_plane =
       centre - (centre - nearest.on_b).dot(nearest.normal) * nearest.normal;
-  const OrientedBox struck_box = w.boxOf(struck);
+  const PlacedSolid struck_box = w.solidOf(struck);
   const Eigen::Vector3d point = nearestPointIn(struck_box, on_plane);
   const Eigen::Vector3d velocity = striker.velocity + striker.spin.cross(point - centre);
   const double closing_speed = -velocity.dot(nearest.normal);
   if (overlap) *overlap = std::max(0.0, -nearest.distance);
   if (closing_speed <= w.options.stability.impact_speed) return false;
   if (nearest.distance > w.options.stability.contact_distance) return false;
-  const OrientedBox striker_box{striker.pose, w.bricks.find(striker.handle)->type.halfExtents()};
+  const PlacedSolid striker_box = striker_type.placed(striker.pose);
   if (overlapAcross(striker_box, struck_box, nearest.normal) < kGrazeOverlap) return false;
   impact->striker = striker.handle;
   impact->striker_mass = striker.mass;
@@ -226,7 +220,7 @@ void strikeFrozenBricks(WorldState* w, const std::vector<ColliderApproach>& near
     // A brick slower than the impact speed everywhere cannot strike: most
     // movers near frozen bricks are settling on them.
     const double fastest = w->scene.linearSpeed(mover->handle) +
-                           w->scene.angularSpeed(mover->handle) * mover->type.halfExtents().norm();
+                           w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass();
     if (fastest <= w->options.stability.impact_speed) continue;
     const double dt = w->options.time_step;
     Striker striker{mover->handle,

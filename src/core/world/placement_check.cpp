@@ -34,8 +34,8 @@ bool isReservedId(const std::string& id) {
   return lower == "table" || lower == "floor" || lower == "world";
 }
 
-Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose,
-                 const Eigen::Vector3d& half_extents, const std::string& prefix) {
+Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose, const BrickType& type,
+                 const std::string& prefix) {
   if (!pose.translation().allFinite())
     return Status::error(prefix + "position is not finite: " + formatVector(pose.translation()));
   if (!insideWorld(w.options, pose.translation()))
@@ -44,7 +44,7 @@ Status checkPose(const WorldState& w, const Eigen::Isometry3d& pose,
   if (!isRotation(pose.linear()))
     return Status::error(prefix +
                          "orientation is not a proper rotation (NaN, Inf or not orthonormal)");
-  const double lowest = bounds(OrientedBox{pose, half_extents}).min().z();
+  const double lowest = bounds(type.placed(pose)).min().z();
   if (lowest < -w.options.overlap_tolerance)
     return Status::error(prefix + "pose puts the brick " + millimetres(-lowest) +
                          " below the table top (z = 0)");
@@ -83,12 +83,12 @@ Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   if (!type)
     return Status::error("unknown brick type '" + type_name +
                          "' (known: " + joinNames(w.types.names()) + ")");
-  if (Status pose = checkPose(w, p.pose, type->halfExtents()); !pose) return pose;
+  if (Status pose = checkPose(w, p.pose, *type); !pose) return pose;
   if (Status velocity = checkVelocity(w, p.linear_velocity, p.angular_velocity); !velocity)
     return velocity;
 
-  const OrientedBox box{p.pose, type->halfExtents()};
-  const Eigen::AlignedBox3d extent = bounds(box);
+  const PlacedSolid solid = type->placed(p.pose);
+  const Eigen::AlignedBox3d extent = bounds(solid);
   const Eigen::Vector3d low = extent.min(), high = extent.max();
   // Candidates: every brick that is not frozen, and the frozen ones whose
   // boxes come near, in placement order.
@@ -100,17 +100,17 @@ Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
     candidates.push_back(frozen);
   std::sort(candidates.begin(), candidates.end());
   for (BodyHandle other : candidates) {
-    const double gap = separation(box, w.boxOf(other));
+    const double gap = separation(solid, w.solidOf(other));
     if (gap < -w.options.overlap_tolerance)
       return Status::error("pose overlaps brick '" + w.nameOf(other) + "' by " + millimetres(-gap));
   }
   return Status::success();
 }
 
-void appendContacts(const WorldState& w, BodyHandle brick, double friction, const OrientedBox& box,
+void appendContacts(const WorldState& w, BodyHandle brick, double friction, const PlacedSolid& box,
                     BodyHandle other, bool any_face, std::vector<PairContact>* contacts) {
   const double touching = w.options.stability.contact_distance;
-  const OrientedBox other_box = w.boxOf(other);
+  const PlacedSolid other_box = w.solidOf(other);
   // Touching, not sunk in: an overlap the placement check let through is
   // Bullet's to resolve before the brick can rest.
   if (std::abs(separation(other_box, box)) > touching) return;
@@ -134,7 +134,7 @@ void appendContacts(const WorldState& w, BodyHandle brick, double friction, cons
 }
 
 std::vector<PairContact> restingContacts(const WorldState& w, BodyHandle brick, double friction,
-                                         const OrientedBox& box, const Eigen::Vector3d& low,
+                                         const PlacedSolid& box, const Eigen::Vector3d& low,
                                          const Eigen::Vector3d& high) {
   const bool leaning = w.model && w.model->judgesLeaning();
   std::vector<PairContact> contacts;

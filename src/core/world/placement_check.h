@@ -3,7 +3,8 @@
 #include <vector>
 
 #include "brick_stack_sim/core/types/brick.h"
-#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/convex_solid.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/status.h"
 #include "physics/contact.h"
 
@@ -11,11 +12,11 @@ namespace brick_stack_sim {
 
 struct WorldState;
 
-/// A brick of `half_extents` [m] at `pose`: a finite position, a proper
-/// rotation, not below the table top. Messages start with `prefix`
+/// A brick of `type` at `pose`: a finite position, a proper rotation, no
+/// point of it below the table top. Messages start with `prefix`
 /// ("target "): "target position is not finite: ...".
-Status checkPose(const WorldState& world, const Eigen::Isometry3d& pose,
-                 const Eigen::Vector3d& half_extents, const std::string& prefix = "");
+Status checkPose(const WorldState& world, const Eigen::Isometry3d& pose, const BrickType& type,
+                 const std::string& prefix = "");
 
 /// Velocities [m/s], [rad/s]: finite and within the world's speed limits.
 /// Messages start with `prefix` ("release ").
@@ -38,7 +39,7 @@ Status checkPlacement(const WorldState& world, const BrickPlacement& placement);
 /// contact across every touching face (touchingContacts). Nothing when they
 /// do not touch within the stability's contact distance.
 void appendContacts(const WorldState& world, BodyHandle brick, double friction,
-                    const OrientedBox& box, BodyHandle other, bool any_face,
+                    const PlacedSolid& box, BodyHandle other, bool any_face,
                     std::vector<PairContact>* contacts);
 
 /// The contacts of a brick resting at `box` (handle `brick`, of a material
@@ -48,7 +49,7 @@ void appendContacts(const WorldState& world, BodyHandle brick, double friction,
 /// always; for a model that judges leaning, every touching face too, and the
 /// bricks placed at rest since the last step.
 std::vector<PairContact> restingContacts(const WorldState& world, BodyHandle brick, double friction,
-                                         const OrientedBox& box, const Eigen::Vector3d& low,
+                                         const PlacedSolid& box, const Eigen::Vector3d& low,
                                          const Eigen::Vector3d& high);
 
 }  // namespace brick_stack_sim

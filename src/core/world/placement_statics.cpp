@@ -59,7 +59,7 @@ std::string standsReason(BrickState kind, const std::string& names, double accel
 }  // namespace
 
 std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, double friction,
-                                        const OrientedBox& box, const Eigen::Vector3d& low,
+                                        const PlacedSolid& box, const Eigen::Vector3d& low,
                                         const Eigen::Vector3d& high) {
   std::vector<PairContact> contacts;
   appendContacts(w, brick, friction, box, kTableHandle, true, &contacts);

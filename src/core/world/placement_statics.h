@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "brick_stack_sim/core/types/brick.h"
-#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "physics/contact.h"
 
 namespace brick_stack_sim {
@@ -27,7 +27,7 @@ struct StaticsVerdict {
 /// and bricks in any mode (mode none has no frozen bricks), across every
 /// touching face.
 std::vector<PairContact> touchingBricks(const WorldState& world, BodyHandle brick, double friction,
-                                        const OrientedBox& box, const Eigen::Vector3d& low,
+                                        const PlacedSolid& box, const Eigen::Vector3d& low,
                                         const Eigen::Vector3d& high);
 
 /// Rigid-block statics of `brick` alone on `contacts` (all with a = brick).

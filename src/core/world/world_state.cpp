@@ -55,6 +55,10 @@ WorldState::WorldState(const WorldOptions& world_options, const BrickTypeLibrary
     : options(world_options),
       types(brick_types),
       start_time(start),
+      table_solid(boxSolid(Eigen::Vector3d(world_options.table.size.x() / 2,
+                                           world_options.table.size.y() / 2,
+                                           world_options.table.thickness / 2))),
+      floor_solid(boxSolid(Eigen::Vector3d(1e3, 1e3, 0.5))),
       scene(world_options),
       dormant(&scene),
       sets(&scene, &dormant) {}
@@ -71,24 +75,26 @@ std::string WorldState::nameOf(BodyHandle handle) const {
   return brick ? brick->id : "brick#" + std::to_string(handle);
 }
 
-OrientedBox WorldState::boxOf(BodyHandle handle) const {
-  OrientedBox box;
+PlacedSolid WorldState::solidOf(BodyHandle handle) const {
+  PlacedSolid placed;
   if (handle == kTableHandle) {
-    box.half_extents = Eigen::Vector3d(options.table.size.x() / 2, options.table.size.y() / 2,
-                                       options.table.thickness / 2);
-    box.pose.translation().z() = -options.table.thickness / 2;
+    placed.solid = &table_solid;
+    placed.pose.translation().z() = -options.table.thickness / 2;
   } else if (handle == kFloorHandle) {
-    box.half_extents = Eigen::Vector3d(1e3, 1e3, 0.5);
-    box.pose.translation().z() = -options.table.height - 0.5;
+    placed.solid = &floor_solid;
+    placed.pose.translation().z() = -options.table.height - 0.5;
   } else {
-    box.pose = scene.pose(handle);
-    box.half_extents = bricks.find(handle)->type.halfExtents();
+    placed = bricks.find(handle)->type.placed(scene.pose(handle));
   }
-  return box;
+  return placed;
 }
 
 double WorldState::frictionOf(BodyHandle handle) const {
   return isGround(handle) ? options.table.friction : bricks.find(handle)->type.friction;
+}
+
+Eigen::Vector3d centreOfMassAt(const BrickType& type, const Eigen::Isometry3d& pose) {
+  return pose * type.mass_frame.translation();
 }
 
 BodyMotion WorldState::motionOf(const BrickRecord& brick) const {

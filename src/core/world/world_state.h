@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "bullet/bullet_scene.h"
 #include "bullet/dormant_colliders.h"
@@ -38,12 +39,17 @@ class BrickRegistry {
   std::unordered_map<BodyHandle, BrickRecord*> by_handle_;
 };
 
+/// Where the centre of mass of a brick of `type` at `pose` lies [m].
+Eigen::Vector3d centreOfMassAt(const BrickType& type, const Eigen::Isometry3d& pose);
+
 struct WorldState {
   WorldState(const WorldOptions& world_options, const BrickTypeLibrary& brick_types, double start);
 
   WorldOptions options;
   BrickTypeLibrary types;
   double start_time = 0.0;  ///< Sim time of step 0 [s]: worlds that replace one go on from it.
+  ConvexSolid table_solid;  ///< The table's box, centred on its own frame.
+  ConvexSolid floor_solid;  ///< A slab far wider than anything that lands on it.
   BulletScene scene;
   DormantColliders dormant;
   BrickSets sets;
@@ -88,9 +94,10 @@ struct WorldState {
             std::vector<std::string> affected = {});
   /// A brick's id, "table", "floor", or "brick#<n>" for a handle no brick has.
   std::string nameOf(BodyHandle handle) const;
-  /// The box of a brick (its pose in Bullet), of the table, or of the floor
-  /// as a slab far wider than anything that can land on it.
-  OrientedBox boxOf(BodyHandle handle) const;
+  /// The solid of a brick (at its pose in Bullet), of the table, or of the
+  /// floor as a slab far wider than anything that can land on it; valid
+  /// while the brick lives.
+  PlacedSolid solidOf(BodyHandle handle) const;
   /// The Coulomb coefficient of a brick's material or the table's [-].
   double frictionOf(BodyHandle handle) const;
   /// What the model is told of a brick now.

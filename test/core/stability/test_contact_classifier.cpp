@@ -85,19 +85,21 @@ TEST(ContactClassifier, FlushFacesGetTheirWholeOverlap) {
                          Eigen::AngleAxisd(1e-6, Eigen::Vector3d::UnitX()))
                             .toRotationMatrix();
   upper.pose.translation().z() = test::kKaplaThickness;
+  const ConvexSolid plank = boxSolid(lower.half_extents);
+  const auto solid_of = [&](BodyHandle h) {
+    return PlacedSolid{h == 0 ? lower.pose : upper.pose, &plank};
+  };
   PairContact half = contact(1, 0, Eigen::Vector3d::UnitZ(), test::kKaplaThickness / 2);
   half.points.resize(2);
   std::vector<PairContact> contacts = {half};
-  refineFlushPatches([&](BodyHandle h) { return h == 0 ? lower : upper; }, StabilityOptions(),
-                     &contacts);
+  refineFlushPatches(solid_of, StabilityOptions(), &contacts);
   ASSERT_EQ(contacts[0].points.size(), 4u);
   Polygon2d square;
   for (const Eigen::Vector3d& p : contacts[0].points) square.push_back(p.head<2>());
   EXPECT_NEAR(area(convexHull(square)), test::kKaplaWidth * test::kKaplaWidth, 1e-9);
   // A side contact is left as Bullet reported it.
   std::vector<PairContact> side = {contact(1, 0, Eigen::Vector3d::UnitX())};
-  refineFlushPatches([&](BodyHandle h) { return h == 0 ? lower : upper; }, StabilityOptions(),
-                     &side);
+  refineFlushPatches(solid_of, StabilityOptions(), &side);
   EXPECT_EQ(side[0].points.size(), 4u);
   EXPECT_EQ(side[0].points[0], contact(1, 0, Eigen::Vector3d::UnitX()).points[0]);
 }

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
+
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 
 namespace brick_stack_sim {
 
@@ -34,7 +37,10 @@ struct BrickSnapshot {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< [rad/s]
-  Eigen::Vector3d size = Eigen::Vector3d::Zero();              ///< Full extents [m].
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();              ///< Bounds' full extents [m].
+  /// Its type's solid in the brick's frame (shared, never changed): what
+  /// markers draw. Null: a box of `size`.
+  std::shared_ptr<const ConvexSolid> solid;
   double mass = 0.0;                                           ///< [kg]
   BrickState state = BrickState::kDynamic;
   bool asleep = false;    ///< Bullet has deactivated it (mode none with sleeping).

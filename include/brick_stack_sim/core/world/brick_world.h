@@ -52,6 +52,7 @@ struct PlacementReport {
   std::string reason;
 };
 
+struct BrickRecord;
 struct WorldState;
 
 /// Bricks on a table, simulated by Bullet in double precision with a fixed
@@ -77,6 +78,14 @@ class BrickWorld {
   /// Adds a brick; `assigned_id` (optional) receives its id. A brick placed
   /// at rest is judged by the model at once.
   Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr);
+  /// Adds bricks at one instant, each checked and placed as by addBrick()
+  /// in order (one refused leaves the others placed); those placed at rest
+  /// are judged together once all are in, as one structure: an arch whose
+  /// half-rings could not stand alone stands when its ring closes. One
+  /// status per placement; `assigned_ids` (optional) receives the ids,
+  /// empty for a refused one.
+  std::vector<Status> addBricks(const std::vector<BrickPlacement>& placements,
+                                std::vector<std::string>* assigned_ids = nullptr);
   /// Removes a brick; what rested on it is woken.
   Status removeBrick(const std::string& id);
   /// Applies an impulse [N s] at a world point [m] on or in the brick
@@ -158,6 +167,8 @@ class BrickWorld {
   explicit BrickWorld(std::unique_ptr<WorldState> state);
   /// removeBrick, announced by an event of `kind` (removed or lost).
   Status remove(const std::string& id, SimEventKind kind, const std::string& reason);
+  /// A checked placement's record and Bullet body, in the world's sets.
+  BrickRecord* placeBody(const BrickPlacement& placement);
   std::unique_ptr<WorldState> state_;
 };
 
