@@ -17,6 +17,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "scene/generators/generator_support.h"
+#include "scene/type_yaml.h"
 #include "scene/yaml_fields.h"
 #include "util/text_format.h"
 
@@ -41,26 +42,6 @@ TableOptions readTable(const YAML::Node& node) {
   table.friction = readNumber(node, "friction", where, table.friction);
   table.restitution = readNumber(node, "restitution", where, table.restitution);
   return table;
-}
-
-BrickType readType(const std::string& name, const YAML::Node& node) {
-  const std::string where = "types." + name;
-  requireKnownKeys(node, where, {"size", "mass", "friction", "restitution", "rolling_friction"});
-  if (!node["size"] || !node["mass"]) fail(where, "needs 'size' [m] and 'mass' [kg]");
-  BrickType type;
-  type.name = name;
-  type.size = readVector<3>(node, "size", where, type.size);
-  type.mass = readNumber(node, "mass", where, 0.0);
-  // A uniform box: m/12 (b^2 + c^2) about each axis.
-  const Eigen::Vector3d squared = type.size.cwiseProduct(type.size);
-  type.inertia = type.mass / 12.0 *
-                 Eigen::Vector3d(squared.y() + squared.z(), squared.x() + squared.z(),
-                                 squared.x() + squared.y());
-  type.friction = readNumber(node, "friction", where, type.friction);
-  type.restitution = readNumber(node, "restitution", where, type.restitution);
-  type.rolling_friction = readNumber(node, "rolling_friction", where, type.rolling_friction);
-  if (Status valid = validateBrickType(type); !valid) fail(where, valid.message);
-  return type;
 }
 
 ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
@@ -114,6 +95,8 @@ constexpr GeneratorEntry kGenerators[] = {
     {"card_house", &readCardHouseGenerator, &countCardHouseGenerator},
     {"impact", &readImpactGenerator, &countImpactGenerator},
     {"kapla_record", &readKaplaRecordGenerator, &countKaplaRecordGenerator},
+    {"arch", &readArchGenerator, &countArchGenerator},
+    {"column", &readColumnGenerator, &countColumnGenerator},
 };
 
 /// The generator `node` names; fails on a node without a known name.
@@ -128,10 +111,17 @@ const GeneratorEntry& findGenerator(const YAML::Node& node, const std::string& w
   fail(where, "unknown generator " + quotedId(name) + " (available: " + available + ")");
 }
 
-void runGenerator(const YAML::Node& node, const TableOptions& table, const BrickTypeLibrary& types,
-                  std::vector<ScheduledBrick>* bricks) {
+/// Runs one generator; the types it defines join the scene's and `types`.
+void runGenerator(const YAML::Node& node, const TableOptions& table, BrickTypeLibrary* types,
+                  Scene* scene) {
   const std::string where = "generator";
-  findGenerator(node, where).read(node, where, GeneratorContext{table, types}, bricks);
+  std::vector<BrickType> defined;
+  findGenerator(node, where).read(node, where, GeneratorContext{table, *types, &defined},
+                                  &scene->bricks);
+  for (BrickType& type : defined) {
+    if (Status added = types->add(type); !added) fail(where, added.message);
+    scene->types.push_back(std::move(type));
+  }
 }
 
 /// The generators of a scene: one, or a list of them.
@@ -250,14 +240,14 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     if (root["types"]) {
       if (!root["types"].IsMap()) fail("types", "expected a map of name: {size, mass, ...}");
       for (const auto& entry : root["types"])
-        result.types.push_back(readType(entry.first.as<std::string>(), entry.second));
+        result.types.push_back(scene_yaml::readSceneType(entry.first.as<std::string>(), entry.second));
     }
     BrickTypeLibrary all_types = types;
     if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);
     checkBrickCount(root, limits.max_bricks);
     const TableOptions table = result.table.value_or(TableOptions());
     for (const YAML::Node& generator : generatorNodes(root))
-      runGenerator(generator, table, all_types, &result.bricks);
+      runGenerator(generator, table, &all_types, &result);
     if (root["bricks"]) {
       if (!root["bricks"].IsSequence()) fail("bricks", "expected a list");
       std::size_t index = 0;

@@ -121,6 +121,12 @@ void StackStabilityModel::placeAtRest(const RestingPlacement& placed,
   FreezeDecision decision;
   if (evaluateMover(placed.brick, index.of(placed.brick.handle), &stability, &decision)) {
     freeze(placed.brick, std::move(decision), stability, decisions);
+    // It may be what a group placed before it was waiting for: the last
+    // voussoir of an arch, standing on the table, closes the ring.
+    for (const PairContact& contact : placed.contacts) {
+      const BodyHandle other = contact.a == placed.brick.handle ? contact.b : contact.a;
+      if (unjudged_.count(other)) admitGroupAtRest(other, decisions, &placed.contacts);
+    }
     return;
   }
   if (!criterion_->usesSideContacts()) return;
@@ -128,10 +134,12 @@ void StackStabilityModel::placeAtRest(const RestingPlacement& placed,
   admitGroupAtRest(placed.brick.handle, decisions);
 }
 
-void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions) {
+void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions,
+                                           const std::vector<PairContact>* frozen_contacts) {
   // A brick placed earlier saw none of the later ones: the contacts of all
-  // of them together name every pair once.
+  // of them together name every pair once (a brick frozen since adds its own).
   std::vector<PairContact> contacts;
+  if (frozen_contacts) contacts = *frozen_contacts;
   for (const auto& entry : unjudged_)
     contacts.insert(contacts.end(), entry.second.contacts.begin(), entry.second.contacts.end());
   const ContactIndex index(&contacts);

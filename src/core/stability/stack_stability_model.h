@@ -53,8 +53,10 @@ class StackStabilityModel : public StabilityModel {
   /// touches (Bullet cannot hold a V for one step: it is judged now or never).
   void placeAtRest(const RestingPlacement& placed, StabilityDecisions* decisions);
   /// The bricks placed at rest, not yet admitted, that `newest` reaches
-  /// through contacts among them: admitted together when the criterion says so.
-  void admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions);
+  /// through contacts among them: admitted together when the criterion says
+  /// so. `frozen_contacts`: those of a brick just frozen that they touch.
+  void admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions,
+                        const std::vector<PairContact>* frozen_contacts = nullptr);
   /// The step's contacts: what movers and held bricks press on the frozen
   /// bricks and on the movers at rest.
   void measureLoads(const StabilityInput& input);

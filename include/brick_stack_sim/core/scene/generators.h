@@ -143,6 +143,37 @@ struct KaplaRecordParams {
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Centre of the tower [m].
 };
 
+/// Parameters of the `arch` generator: an arch of `voussoirs` wedge-shaped
+/// blocks standing on the table, its springings on the table top, in the
+/// x-z plane. Each voussoir is a trapezoidal prism between two radial
+/// joints (its intrados and extrados are chords), of a type the generator
+/// defines. Semicircular (`pointed` = 0): one arc about the middle of the
+/// springing line. Pointed: each half an arc of `radius` about a centre
+/// `pointed` times `radius` beyond the middle, meeting at a joint on top.
+struct ArchParams {
+  int voussoirs = 15;        ///< Even when pointed.
+  double radius = 0.1;       ///< Of the centre line of the ring [m].
+  double thickness = 0.015;  ///< Of the ring, radially [m].
+  double depth = 0.03;       ///< Along y [m].
+  double pointed = 0.0;      ///< In [0, 0.9] [-].
+  double density = 700.0;    ///< [kg/m^3]; 700: maple, as toy blocks.
+  double friction = 0.8;     ///< Of the voussoirs' material [-].
+  std::string type_name = "voussoir";  ///< The type it defines.
+  double start = 0.0;                  ///< Every voussoir is placed at rest then [s].
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Middle of the springing line [m].
+};
+
+/// Parameters of the `column` generator: `count` bricks of one type stacked
+/// along z, each centred on the one below (a column of cylinders standing
+/// on end, or of any type).
+struct ColumnParams {
+  int count = 5;
+  std::string type;
+  double start = 0.0;     ///< [s]
+  double interval = 0.0;  ///< [s]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< [m]
+};
+
 /// Appends a tower: layers alternate between bricks along x and along y, each
 /// layer resting across the ends of the one below.
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
@@ -179,6 +210,14 @@ Status generateImpact(const ImpactParams& params, const BrickTypeLibrary& types,
 Status generateKaplaRecord(const KaplaRecordParams& params, const BrickTypeLibrary& types,
                            std::vector<ScheduledBrick>* bricks);
 
+/// Appends an arch and the voussoir type it is built of (to `types`).
+Status generateArch(const ArchParams& params, std::vector<BrickType>* types,
+                    std::vector<ScheduledBrick>* bricks);
+
+/// Appends a column.
+Status generateColumn(const ColumnParams& params, const BrickTypeLibrary& types,
+                      std::vector<ScheduledBrick>* bricks);
+
 /// Appends a pile drop.
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
                     std::vector<ScheduledBrick>* bricks);
@@ -197,5 +236,7 @@ std::int64_t brickCount(const AFrameParams& params);
 std::int64_t brickCount(const CardHouseParams& params);
 std::int64_t brickCount(const ImpactParams& params);
 std::int64_t brickCount(const KaplaRecordParams& params);
+std::int64_t brickCount(const ArchParams& params);
+std::int64_t brickCount(const ColumnParams& params);
 
 }  // namespace brick_stack_sim

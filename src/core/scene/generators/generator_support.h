@@ -22,6 +22,9 @@ namespace brick_stack_sim {
 struct GeneratorContext {
   const TableOptions& table;
   const BrickTypeLibrary& types;
+  /// Where a generator that defines its own brick types (an arch's
+  /// voussoir) puts them; the scene adds them to its types.
+  std::vector<BrickType>* new_types;
 };
 
 /// Reads a generator's YAML map (`where` names it in messages) and appends its
@@ -51,6 +54,10 @@ void readKaplaRecordGenerator(const YAML::Node& node, const std::string& where,
                               const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readPileGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readArchGenerator(const YAML::Node& node, const std::string& where,
+                       const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readColumnGenerator(const YAML::Node& node, const std::string& where,
+                         const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 
 std::int64_t countTowerGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countHarmonicGenerator(const YAML::Node& node, const std::string& where);
@@ -61,6 +68,8 @@ std::int64_t countCardHouseGenerator(const YAML::Node& node, const std::string& 
 std::int64_t countImpactGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countKaplaRecordGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countPileGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countArchGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countColumnGenerator(const YAML::Node& node, const std::string& where);
 
 /// A brick count computed in floating point, as brickCount() says it:
 /// negative as 0, beyond kMaxCountedBricks as that.
