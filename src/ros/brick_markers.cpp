@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/ros/conversions.h"
@@ -11,6 +12,11 @@ namespace brick_stack_sim {
 namespace ros_adapter {
 
 int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.serial); }
+
+std::string brickPartNamespace(std::size_t part) {
+  return part == 0 ? std::string(kBrickMarkerNamespace)
+                   : kBrickPartMarkerNamespacePrefix + std::to_string(part);
+}
 
 int edgeMarkerId(const BrickSnapshot& brick) { return edgeMarkerId(brick.serial); }
 
@@ -31,12 +37,40 @@ bool drawable(const BrickSnapshot& brick) {
   return brick.pose.matrix().allFinite() && brick.size.allFinite();
 }
 
-}  // namespace
+/// Drawn as bricks were before shapes, from `size` alone: bit for bit the
+/// same markers for every box brick.
+bool plainBox(const BrickSnapshot& brick) {
+  if (!brick.solid || brick.solid->parts.empty()) return true;
+  const ConvexPart& part = brick.solid->parts.front();
+  return brick.solid->parts.size() == 1 && part.isBox() &&
+         part.pose.matrix() == Eigen::Matrix4d::Identity();
+}
 
-void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* lines) {
-  if (!drawable(brick)) return;
-  const std::array<Eigen::Vector3d, 8> corner = corners(
-      OrientedBox{brick.pose, 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation)});
+/// The part's frame in the world; an identity part pose keeps the solid's
+/// pose bit for bit (a product with it may turn -0 into +0).
+Eigen::Isometry3d partPose(const Eigen::Isometry3d& solid_pose, const ConvexPart& part) {
+  return part.pose.matrix() == Eigen::Matrix4d::Identity() ? solid_pose : solid_pose * part.pose;
+}
+
+bool finitePolyhedron(const ConvexPolyhedron& polyhedron) {
+  for (const Eigen::Vector3d& v : polyhedron.vertices)
+    if (!v.allFinite()) return false;
+  return true;
+}
+
+/// Every number that reaches a marker of the part is finite, and it has a
+/// body: a box or a cylinder of positive size, or a hull with a face.
+bool drawablePart(const ConvexPart& part, const Eigen::Isometry3d& pose) {
+  if (!pose.matrix().allFinite()) return false;
+  if (part.isBox()) return part.box_half_extents.allFinite();
+  if (part.isCylinder())
+    return std::isfinite(part.cylinder_radius) && std::isfinite(part.cylinder_length) &&
+           part.cylinder_length > 0.0;
+  return !part.polyhedron.faces.empty() && finitePolyhedron(part.polyhedron);
+}
+
+void appendBoxEdges(const OrientedBox& box, std::vector<geometry_msgs::Point>* lines) {
+  const std::array<Eigen::Vector3d, 8> corner = corners(box);
   // Corner i's bits say which side of each axis it lies on (corners()), so
   // the corners i and i + bit differ along one axis: every edge once.
   for (int i = 0; i < 8; ++i)
@@ -44,16 +78,137 @@ void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* 
       if (!(i & bit)) appendSegment(corner[i], corner[i | bit], lines);
 }
 
-void appendBoxMarker(const BrickSnapshot& brick, const std::string& frame_id,
-                     const ros::Time& stamp, visualization_msgs::MarkerArray* array) {
+void appendRims(const ConvexPart& part, const Eigen::Isometry3d& pose, double inflation,
+                std::vector<geometry_msgs::Point>* lines) {
+  const double radius = part.cylinder_radius + inflation;
+  for (double z :
+       {-0.5 * part.cylinder_length - inflation, 0.5 * part.cylinder_length + inflation}) {
+    auto rim = [&](int i) {
+      const double angle = 2.0 * M_PI * i / kCylinderRimSegments;
+      return pose * Eigen::Vector3d(radius * std::cos(angle), radius * std::sin(angle), z);
+    };
+    for (int i = 0; i < kCylinderRimSegments; ++i) appendSegment(rim(i), rim(i + 1), lines);
+  }
+}
+
+/// Each vertex moved out so that it lies at least `inflation` outside every
+/// face it is on: along the mean of those faces' normals, as far as the face
+/// most across that mean needs (a box corner moves by `inflation` on each
+/// axis). The factor is capped where a vertex's faces nearly fold back.
+std::vector<Eigen::Vector3d> inflatedVertices(const ConvexPolyhedron& polyhedron,
+                                              double inflation) {
+  const std::size_t n = polyhedron.vertices.size();
+  std::vector<Eigen::Vector3d> direction(n, Eigen::Vector3d::Zero());
+  for (const ConvexPolyhedron::Face& face : polyhedron.faces)
+    for (int i : face.loop) direction[i] += face.normal;
+  for (Eigen::Vector3d& d : direction)
+    if (d.norm() > 0.0) d.normalize();
+  std::vector<double> least(n, 1.0);
+  for (const ConvexPolyhedron::Face& face : polyhedron.faces)
+    for (int i : face.loop) least[i] = std::min(least[i], direction[i].dot(face.normal));
+  std::vector<Eigen::Vector3d> moved(n);
+  for (std::size_t i = 0; i < n; ++i)
+    moved[i] = polyhedron.vertices[i] + direction[i] * (inflation / std::max(least[i], 0.2));
+  return moved;
+}
+
+}  // namespace
+
+void appendPartOutline(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
+                       double inflation, std::vector<geometry_msgs::Point>* lines) {
+  const Eigen::Isometry3d pose = partPose(solid_pose, part);
+  if (!drawablePart(part, pose)) return;
+  if (part.isBox()) {
+    appendBoxEdges(OrientedBox{pose, part.box_half_extents + Eigen::Vector3d::Constant(inflation)},
+                   lines);
+  } else if (part.isCylinder()) {
+    appendRims(part, pose, inflation, lines);
+  } else {
+    const std::vector<Eigen::Vector3d> moved = inflatedVertices(part.polyhedron, inflation);
+    for (const std::array<int, 2>& edge : part.polyhedron.edges)
+      appendSegment(pose * moved[edge[0]], pose * moved[edge[1]], lines);
+  }
+}
+
+void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* lines) {
+  if (!drawable(brick)) return;
+  if (plainBox(brick)) {
+    appendBoxEdges(
+        OrientedBox{brick.pose, 0.5 * brick.size + Eigen::Vector3d::Constant(kBrickEdgeInflation)},
+        lines);
+    return;
+  }
+  for (const ConvexPart& part : brick.solid->parts)
+    appendPartOutline(part, brick.pose, kBrickEdgeInflation, lines);
+}
+
+bool partBodyMarker(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
+                    visualization_msgs::Marker* marker) {
+  using visualization_msgs::Marker;
+  const Eigen::Isometry3d pose = partPose(solid_pose, part);
+  if (!drawablePart(part, pose)) return false;
+  if (part.isBox()) {
+    marker->type = Marker::CUBE;
+    marker->scale = toVectorMsg(2.0 * part.box_half_extents);
+  } else if (part.isCylinder()) {
+    marker->type = Marker::CYLINDER;  // RViz's cylinder stands along its z, as the part's
+    const double diameter = 2.0 * part.cylinder_radius;
+    marker->scale = toVectorMsg(Eigen::Vector3d(diameter, diameter, part.cylinder_length));
+  } else {
+    const ConvexPolyhedron& hull = part.polyhedron;
+    std::vector<geometry_msgs::Point> points;
+    // Counter-clockwise fans keep every triangle facing out, as RViz lights it.
+    for (const ConvexPolyhedron::Face& face : hull.faces)
+      for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
+        for (int vertex : {face.loop[0], face.loop[i], face.loop[i + 1]})
+          points.push_back(toPointMsg(hull.vertices[vertex]));
+    if (points.empty()) return false;  // RViz refuses an empty TRIANGLE_LIST
+    marker->type = Marker::TRIANGLE_LIST;
+    marker->scale = toVectorMsg(Eigen::Vector3d::Ones());  // the points are taken as they are
+    marker->points = std::move(points);
+  }
+  marker->pose = toPoseMsg(pose);
+  if (marker->type != Marker::TRIANGLE_LIST) marker->points.clear();
+  return true;
+}
+
+std::vector<visualization_msgs::Marker> solidBodyMarkers(const ConvexSolid* solid,
+                                                         const Eigen::Vector3d& size,
+                                                         const Eigen::Isometry3d& pose,
+                                                         const std_msgs::ColorRGBA& color) {
+  std::vector<visualization_msgs::Marker> markers;
+  const ConvexSolid box = boxSolid(0.5 * size);
+  const ConvexSolid& drawn = solid && !solid->parts.empty() ? *solid : box;
+  for (const ConvexPart& part : drawn.parts) {
+    visualization_msgs::Marker marker;
+    if (!partBodyMarker(part, pose, &marker)) continue;
+    marker.color = color;
+    markers.push_back(std::move(marker));
+  }
+  return markers;
+}
+
+void appendBodyMarkers(const BrickSnapshot& brick, const std::string& frame_id,
+                       const ros::Time& stamp, visualization_msgs::MarkerArray* array) {
   using visualization_msgs::Marker;
   if (!drawable(brick)) return;
-  Marker box =
-      newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
-  box.pose = toPoseMsg(brick.pose);
-  box.scale = toVectorMsg(brick.size);
-  box.color = brickColor(brick);
-  array->markers.push_back(std::move(box));
+  if (plainBox(brick)) {
+    Marker box =
+        newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
+    box.pose = toPoseMsg(brick.pose);
+    box.scale = toVectorMsg(brick.size);
+    box.color = brickColor(brick);
+    array->markers.push_back(std::move(box));
+    return;
+  }
+  const std_msgs::ColorRGBA color = brickColor(brick);
+  for (std::size_t i = 0; i < brick.solid->parts.size(); ++i) {
+    const std::string ns = brickPartNamespace(i);
+    Marker body = newMarker(frame_id, stamp, ns.c_str(), brickMarkerId(brick), Marker::CUBE);
+    if (!partBodyMarker(brick.solid->parts[i], brick.pose, &body)) continue;
+    body.color = color;
+    array->markers.push_back(std::move(body));
+  }
 }
 
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,
@@ -71,7 +226,7 @@ visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot
   std::map<int, Marker> edges;
   for (const BrickSnapshot& brick : bricks) {
     if (!drawable(brick)) continue;
-    appendBoxMarker(brick, frame_id, stamp, &array);
+    appendBodyMarkers(brick, frame_id, stamp, &array);
     const int id = edgeMarkerId(brick);
     auto group = edges.find(id);
     if (group == edges.end()) group = edges.emplace(id, makeEdgeMarker(id, frame_id, stamp)).first;

@@ -13,7 +13,7 @@ bool sameSnapshot(const BrickSnapshot& a, const BrickSnapshot& b) {
          a.angular_velocity == b.angular_velocity && a.state == b.state && a.asleep == b.asleep &&
          a.fell_off == b.fell_off && a.com_above == b.com_above && a.mass_above == b.mass_above &&
          a.margin == b.margin && a.supported_by == b.supported_by && a.id == b.id &&
-         a.type == b.type && a.serial == b.serial;
+         a.type == b.type && a.serial == b.serial && a.solid == b.solid;
 }
 
 bool sameForce(const SupportGeometry::ContactForce& a, const SupportGeometry::ContactForce& b) {

@@ -11,7 +11,7 @@ void MarkerUpdates::appendBrick(const MirroredBrick& brick, const ros::Time& sta
                                 visualization_msgs::MarkerArray* array) {
   const std::size_t first = array->markers.size();
   if (brick.finite) {
-    appendBoxMarker(brick.snapshot, frame_id_, stamp, array);
+    appendBodyMarkers(brick.snapshot, frame_id_, stamp, array);
     if (brick.described)
       appendStabilityMarkers(brick.snapshot, brick.geometry, frame_id_, stamp, array);
   }

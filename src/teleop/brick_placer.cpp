@@ -9,7 +9,9 @@
 #include <visualization_msgs/InteractiveMarkerControl.h>
 #include <visualization_msgs/Marker.h>
 
+#include "brick_stack_sim/ros/brick_markers.h"
 #include "brick_stack_sim/ros/conversions.h"
+#include "brick_stack_sim/ros/marker_style.h"
 #include "brick_stack_sim/teleop/placement_geometry.h"
 
 namespace brick_stack_sim {
@@ -76,38 +78,42 @@ BrickPlacer::BrickPlacer(const PlacerOptions& options, const BrickTypeLibrary& t
 
 void BrickPlacer::waitForSimulator() {
   if (!sim_.waitForSimulator(options_.teleop.wait_for_sim) || !options_.start_beside) return;
-  std::vector<OrientedBox> boxes;
-  if (!brickBoxes(&boxes) || boxes.empty()) return;
+  SolidBricks bricks;
+  if (!brickSolids(&bricks) || bricks.placed.empty()) return;
   // Beside the structure, on the table: the ghost and its rings hide none
-  // of it. The half extents of the ghost's box as turned, seen along x, y, z.
-  const OrientedBox turned{Eigen::Isometry3d(ghost_pose_.linear()),
-                           types_.find(type_)->halfExtents()};
-  ghost_pose_.translation() =
-      besideBricks(boxes, bounds(turned).max(), options_.teleop.initial_position);
+  // of it.
+  ghost_pose_.translation() = besideBricks(bricks.placed, *typeSolid(), ghost_pose_.linear(),
+                                           options_.teleop.initial_position);
   server_.setPose(kGhostMarker, ros_adapter::toPoseMsg(ghost_pose_));
   server_.applyChanges();
-  ROS_INFO("brick_placer: ghost moved beside the %zu bricks, to %s", boxes.size(),
+  ROS_INFO("brick_placer: ghost moved beside the %zu bricks, to %s", bricks.placed.size(),
            describe(ghost_pose_.translation()).c_str());
 }
 
-bool BrickPlacer::brickBoxes(std::vector<OrientedBox>* boxes) {
+bool BrickPlacer::brickSolids(SolidBricks* solids) {
   std::vector<Brick> bricks;
   if (!sim_.getBricks(&bricks)) return false;
-  boxes->clear();
+  *solids = SolidBricks();
   for (const Brick& brick : bricks) {
-    OrientedBox box;
+    Eigen::Isometry3d pose;
     // The simulator publishes nothing non-finite; a brick that fails the
     // check anyway is left out rather than trusted.
-    if (!ros_adapter::fromMsg(brick.pose, "brick pose", &box.pose)) continue;
-    box.half_extents = 0.5 * Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
-    if (!box.half_extents.allFinite()) continue;
-    boxes->push_back(box);
+    if (!ros_adapter::fromMsg(brick.pose, "brick pose", &pose)) continue;
+    std::shared_ptr<const ConvexSolid> solid =
+        brickSolid(types_, brick.type, Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z));
+    if (solid) solids->add(pose, std::move(solid));
   }
   return true;
 }
 
-bool BrickPlacer::keepAboveTable(const Eigen::Vector3d& half_extents, Eigen::Isometry3d* pose) {
-  const double lowest = lowestCentreZ(half_extents, pose->linear());
+std::shared_ptr<const ConvexSolid> BrickPlacer::typeSolid() const {
+  const BrickType& type = *types_.find(type_);
+  return type.solid ? type.solid
+                    : std::make_shared<const ConvexSolid>(boxSolid(type.halfExtents()));
+}
+
+bool BrickPlacer::keepAboveTable(const ConvexSolid& solid, Eigen::Isometry3d* pose) {
+  const double lowest = lowestCentreZ(solid, pose->linear());
   if (pose->translation().z() >= lowest) return false;
   pose->translation().z() = lowest;
   return true;
@@ -132,6 +138,7 @@ void BrickPlacer::buildMenu() {
 void BrickPlacer::showGhost() {
   const bool in_hand = sim_.held().has_value();
   const Eigen::Vector3d size = in_hand ? held_size_ : types_.find(type_)->size;
+  const std::shared_ptr<const ConvexSolid> solid = in_hand ? held_solid_ : typeSolid();
 
   InteractiveMarker ghost;
   ghost.header.frame_id = kWorldFrame;
@@ -141,21 +148,16 @@ void BrickPlacer::showGhost() {
   ghost.pose = ros_adapter::toPoseMsg(ghost_pose_);
   ghost.scale = static_cast<float>(std::max(kMinHandleSize, kHandleScale * size.maxCoeff()));
 
-  Marker box;
-  box.type = Marker::CUBE;
-  box.scale.x = size.x();
-  box.scale.y = size.y();
-  box.scale.z = size.z();
-  // Blue for a brick to be placed, orange for one in hand.
-  box.color.r = in_hand ? 1.0f : 0.2f;
-  box.color.g = in_hand ? 0.55f : 0.6f;
-  box.color.b = in_hand ? 0.1f : 1.0f;
-  box.color.a = kGhostAlpha;
+  // Blue for a brick to be placed, orange for one in hand; drawn as
+  // ~markers draws a brick of the shape, relative to the ghost's pose.
+  const std_msgs::ColorRGBA color = in_hand ? ros_adapter::rgb(1.0f, 0.55f, 0.1f, kGhostAlpha)
+                                            : ros_adapter::rgb(0.2f, 0.6f, 1.0f, kGhostAlpha);
   InteractiveMarkerControl body;
   body.name = "body";
   body.always_visible = true;
   body.interaction_mode = InteractiveMarkerControl::MOVE_3D;
-  body.markers.push_back(box);
+  body.markers =
+      ros_adapter::solidBodyMarkers(solid.get(), size, Eigen::Isometry3d::Identity(), color);
   ghost.controls.push_back(body);
 
   // The quaternions (w, x, y, z) of the interactive_markers tutorials: a
@@ -195,7 +197,7 @@ void BrickPlacer::onPoseUpdate(const FeedbackConstPtr& feedback) {
   if (!takeFeedbackPose(feedback) || !sim_.held()) return;
   // The held brick's target stays above the table (the simulator would
   // refuse it); the ghost shows where the target is.
-  if (keepAboveTable(0.5 * held_size_, &ghost_pose_)) {
+  if (held_solid_ && keepAboveTable(*held_solid_, &ghost_pose_)) {
     server_.setPose(kGhostMarker, ros_adapter::toPoseMsg(ghost_pose_));
     server_.applyChanges();
   }
@@ -224,16 +226,16 @@ void BrickPlacer::place(const Eigen::Isometry3d& pose, const char* action) {
 
 void BrickPlacer::placeHere(const FeedbackConstPtr& feedback) {
   if (!readyToPlace(kPlaceHereEntry) || !takeFeedbackPose(feedback)) return;
-  std::vector<OrientedBox> boxes;
-  if (!brickBoxes(&boxes)) return;
-  const OrientedBox ghost{ghost_pose_, types_.find(type_)->halfExtents()};
-  place(restingPose(ghost, boxes), kPlaceHereEntry);
+  SolidBricks bricks;
+  if (!brickSolids(&bricks)) return;
+  const std::shared_ptr<const ConvexSolid> solid = typeSolid();
+  place(restingPose(PlacedSolid{ghost_pose_, solid.get()}, bricks.placed), kPlaceHereEntry);
 }
 
 void BrickPlacer::dropFromHere(const FeedbackConstPtr& feedback) {
   if (!readyToPlace(kDropFromHereEntry) || !takeFeedbackPose(feedback)) return;
   Eigen::Isometry3d pose = ghost_pose_;
-  keepAboveTable(types_.find(type_)->halfExtents(), &pose);
+  keepAboveTable(*typeSolid(), &pose);
   place(pose, kDropFromHereEntry);
 }
 
@@ -273,6 +275,7 @@ void BrickPlacer::graspNearest(const FeedbackConstPtr& feedback) {
   Eigen::Isometry3d pose;
   if (ros_adapter::fromMsg(brick.pose, "brick pose", &pose)) ghost_pose_ = pose;
   held_size_ = Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
+  held_solid_ = brickSolid(types_, brick.type, held_size_);
   showGhost();
   ROS_INFO("holding %s: drag the ghost to move it, Release lets it go", brick.id.c_str());
 }

@@ -72,6 +72,12 @@ double cursorFloor(const Cursor& cursor, const Eigen::Vector3d& half_extents) {
   return lowestCentreZ(half_extents, cursor.orientation.normalized().toRotationMatrix());
 }
 
+double cursorFloor(const Cursor& cursor, const ConvexSolid& solid) {
+  const Eigen::Matrix3d rotation = cursor.orientation.normalized().toRotationMatrix();
+  if (!finiteSolid(PlacedSolid{Eigen::Isometry3d(rotation), &solid})) return kTableTop;
+  return lowestCentreZ(solid, rotation);
+}
+
 Cursor moveCursor(const Cursor& cursor, const KeyCommand& command, const CursorSteps& steps) {
   Cursor moved = cursor;
   switch (command.action) {

@@ -49,6 +49,7 @@ void KeyboardTeleop::run(RawTerminal& terminal) {
               options_.steps.angular * 180.0 / M_PI, keyMapText().c_str());
   std::fflush(stdout);
   sim_.waitForSimulator(options_.teleop.wait_for_sim);
+  loadTypes();
   publishCursor();
   printCursor();
   const ros::WallDuration target_period(1.0 / options_.held_target_rate);
@@ -83,9 +84,8 @@ void KeyboardTeleop::handle(const KeyCommand& command) {
     case KeyAction::kMove:
     case KeyAction::kTurn: {
       CursorSteps steps = options_.steps;
-      steps.min_z = std::max(
-          steps.min_z,
-          cursorFloor(cursor_, sim_.held() ? held_half_extents_ : Eigen::Vector3d::Zero()));
+      if (sim_.held() && held_solid_)
+        steps.min_z = std::max(steps.min_z, cursorFloor(cursor_, *held_solid_));
       cursor_ = moveCursor(cursor_, command, steps);
       publishCursor();
       break;
@@ -111,10 +111,21 @@ void KeyboardTeleop::grasp() {
     cursor_.position = pose.translation();
     cursor_.orientation = Eigen::Quaterniond(pose.linear()).normalized();
   }
-  held_half_extents_ = 0.5 * Eigen::Vector3d(brick.size.x, brick.size.y, brick.size.z);
-  if (!held_half_extents_.allFinite()) held_half_extents_.setZero();
+  const Eigen::Vector3d size(brick.size.x, brick.size.y, brick.size.z);
+  held_half_extents_ = size.allFinite() ? Eigen::Vector3d(0.5 * size) : Eigen::Vector3d::Zero();
+  held_solid_ = brickSolid(types_, brick.type, size);
   publishCursor();
   std::printf("holding %s\n", brick.id.c_str());
+}
+
+void KeyboardTeleop::loadTypes() {
+  // The simulator's files, as the placer reads them: it is up by now, so
+  // its ~types_urdf is what its bricks were made of.
+  PlacerOptions placer;
+  placer.teleop = options_.teleop;
+  if (Status loaded = loadPlacerTypes(placer, &types_); !loaded)
+    ROS_WARN("keyboard_teleop: every held brick counts as the box of its size: %s",
+             loaded.message.c_str());
 }
 
 void KeyboardTeleop::release() {

@@ -1,13 +1,17 @@
 #pragma once
-// The bricks and the table as markers: a box and an outline per brick.
+// The bricks and the table as markers: a body (one marker per convex part)
+// and an outline per brick.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include <geometry_msgs/Point.h>
 #include <ros/time.h>
+#include <std_msgs/ColorRGBA.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/world_options.h"
 #include "brick_stack_sim/ros/marker_style.h"
@@ -19,6 +23,20 @@ namespace ros_adapter {
 /// its whole life and a new brick never inherits an old one's.
 int brickMarkerId(const BrickSnapshot& brick);
 
+/// The namespace of the body marker of part `part` of a brick's solid.
+/// Id scheme: every part of a brick has the id brickMarkerId(); part 0 (the
+/// only part of a box, a cylinder or a hull) is in kBrickMarkerNamespace,
+/// part k >= 1 of a compound in kBrickPartMarkerNamespacePrefix + k
+/// ("bricks_part_1", ...). Within a namespace the ids are serials, unique
+/// among the bricks, and within a brick each part has its own namespace:
+/// no two markers share a namespace and id, for any serial (no arithmetic
+/// on ids that could overflow) and any number of parts.
+std::string brickPartNamespace(std::size_t part);
+
+/// Segments of each cylinder cap rim in the outlines and of nothing else [-]:
+/// a circle at tower scale, at 128 points a cylinder.
+constexpr int kCylinderRimSegments = 32;
+
 /// The outline marker of a brick: its serial / kBricksPerEdgeMarker.
 int edgeMarkerId(const BrickSnapshot& brick);
 /// The outline marker of the brick with placement serial `serial`.
@@ -26,19 +44,47 @@ int edgeMarkerId(unsigned serial);
 /// An empty outline marker (LINE_LIST, dark, kBrickEdgeWidth) with `id`.
 visualization_msgs::Marker makeEdgeMarker(int id, const std::string& frame_id,
                                           const ros::Time& stamp);
-/// The 24 points of a brick's twelve edges, kBrickEdgeInflation outside its
-/// box; nothing for a brick with a non-finite pose or size.
+/// The segments (pairs of points, world frame [m]) of a brick's outline,
+/// kBrickEdgeInflation outside its body: a box part's twelve edges (a brick
+/// without a solid: the box of its size), a hull part's edges, a cylinder
+/// part's two cap rims (kCylinderRimSegments each). Nothing for a brick with
+/// a non-finite pose or size, nor for a part that is not finite.
 void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* lines);
-/// A brick's box: a CUBE (scale = size [m], pose of its centre, opaque,
-/// brickColor(brick)) in kBrickMarkerNamespace, id brickMarkerId(); nothing
-/// for a brick with a non-finite pose or size.
-void appendBoxMarker(const BrickSnapshot& brick, const std::string& frame_id,
-                     const ros::Time& stamp, visualization_msgs::MarkerArray* array);
+/// The outline segments of `part` of a solid at `solid_pose` [m], world
+/// frame, `inflation` [m] outside it; nothing when not finite.
+void appendPartOutline(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
+                       double inflation, std::vector<geometry_msgs::Point>* lines);
+
+/// The geometry of `part` of a solid at `solid_pose` as a marker's type,
+/// pose, scale and points (its header, namespace, id and colour untouched):
+/// a box part a CUBE (scale = its size), a cylinder part a CYLINDER (scale
+/// 2r, 2r, length), any other a TRIANGLE_LIST of its faces (each face loop
+/// fanned from its first vertex, counter-clockwise seen from outside, scale
+/// 1) whose points are in the part's own frame; the pose is always
+/// solid_pose * part.pose. False, the marker untouched, for a part with a
+/// non-finite number or nothing to draw.
+bool partBodyMarker(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
+                    visualization_msgs::Marker* marker);
+/// The bodies of a solid at `pose` [m] in `color`, one marker per part that
+/// partBodyMarker() draws (a CUBE of `size` [m] when `solid` is null or has
+/// no part), without header, namespace or id: for a marker given relative
+/// to another, as in an interactive marker's control (a teleop's ghost).
+std::vector<visualization_msgs::Marker> solidBodyMarkers(const ConvexSolid* solid,
+                                                         const Eigen::Vector3d& size,
+                                                         const Eigen::Isometry3d& pose,
+                                                         const std_msgs::ColorRGBA& color);
+/// A brick's body, opaque, brickColor(brick), id brickMarkerId(): without a
+/// solid, or with one box part centred on the brick frame, a CUBE (scale =
+/// size [m], pose of its centre) in kBrickMarkerNamespace, as bricks were
+/// before shapes; else one partBodyMarker() per part, part k in
+/// brickPartNamespace(k). Nothing for a brick with a non-finite pose or
+/// size, nor for a part that is not finite.
+void appendBodyMarkers(const BrickSnapshot& brick, const std::string& frame_id,
+                       const ros::Time& stamp, visualization_msgs::MarkerArray* array);
 
 /// After one DELETEALL marker (so that bricks removed since the last array
 /// disappear, and with them everything else the display shows), per brick in
-/// `frame_id`: a CUBE (scale = size [m], pose of its centre, opaque,
-/// brickColor(brick)) in kBrickMarkerNamespace; then the outline markers
+/// `frame_id`: its body (appendBodyMarkers()); then the outline markers
 /// (appendEdges() of each brick in the order of `bricks`, grouped by
 /// edgeMarkerId(), none without bricks). Bricks with a non-finite pose or size are left
 /// out (RViz would drop the whole array).

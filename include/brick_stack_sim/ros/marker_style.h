@@ -21,8 +21,12 @@ namespace ros_adapter {
 // bricks, the stability layer, and what makes the picture readable. Each its
 // own namespace, so that RViz's MarkerArray display can switch it off on its
 // own.
-/// A box per brick, opaque wood tinted by state.
+/// A body per brick (its box, cylinder or hull), opaque wood tinted by
+/// state; of a compound, its first part.
 constexpr char kBrickMarkerNamespace[] = "bricks";
+/// Part k >= 1 of a compound brick: namespace "bricks_part_<k>", one per
+/// part index, same id as the brick's first part (brickPartNamespace()).
+constexpr char kBrickPartMarkerNamespacePrefix[] = "bricks_part_";
 /// A ray per brick from its COM-above straight down to its support height.
 constexpr char kComAboveMarkerNamespace[] = "com_above";
 /// Per brick: its support patches, and their combined hull.
@@ -30,8 +34,9 @@ constexpr char kContactMeshMarkerNamespace[] = "contact_mesh";
 /// Per brick that statics solved for: its contact points, the contact
 /// forces on it as arrows and the friction cones they must stay in.
 constexpr char kLeaningMarkerNamespace[] = "leaning";
-/// The twelve edges of every brick's box, dark, kBricksPerEdgeMarker bricks
-/// to a marker (ids edgeMarkerId(), from kBrickEdgesMarkerId). Boxes of one
+/// The edges of every brick's body (a box's twelve, a hull's, a cylinder's
+/// two cap rims), dark, kBricksPerEdgeMarker bricks to a marker (ids
+/// edgeMarkerId(), from kBrickEdgesMarkerId). Bodies of one
 /// wood that touch would otherwise run together into one block; and with
 /// `bricks` switched off the outlines stay, so the stack reads as a wire
 /// frame around the rays and meshes inside it.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/teleop/placement_geometry.h"
 #include "brick_stack_sim/teleop/sim_session.h"
 #include "brick_stack_sim/teleop/teleop_options.h"
 
@@ -57,19 +59,22 @@ class BrickPlacer {
   using FeedbackConstPtr = visualization_msgs::InteractiveMarkerFeedbackConstPtr;
 
   void buildMenu();
-  /// (Re)publishes the ghost: the current type's size, or the held brick's
-  /// size and another colour while a brick is held.
+  /// (Re)publishes the ghost: the current type's shape, or the held brick's
+  /// shape and another colour while a brick is held (solidBodyMarkers()).
   void showGhost();
   /// Takes the feedback's pose as the ghost's; false (logged) when it is not
   /// finite, not a unit quaternion or not in the world frame.
   bool takeFeedbackPose(const FeedbackConstPtr& feedback);
-  /// The simulator's bricks as boxes (those with a finite pose and size);
+  /// The simulator's bricks as solids (those with a finite pose and size),
+  /// each its type's from types_ or the box of its size (brickSolid());
   /// false when it does not answer.
-  bool brickBoxes(std::vector<OrientedBox>* boxes);
-  /// Keeps `*pose` from sinking into the table: a brick of `half_extents`
-  /// there would have its lowest corner at the table top at least
+  bool brickSolids(SolidBricks* bricks);
+  /// The current type's solid (the box of its size should it have none).
+  std::shared_ptr<const ConvexSolid> typeSolid() const;
+  /// Keeps `*pose` from sinking into the table: a brick of `solid` there
+  /// would have its lowest point at the table top at least
   /// (lowestCentreZ()). True when it had to be raised.
-  static bool keepAboveTable(const Eigen::Vector3d& half_extents, Eigen::Isometry3d* pose);
+  static bool keepAboveTable(const ConvexSolid& solid, Eigen::Isometry3d* pose);
 
   void onPoseUpdate(const FeedbackConstPtr& feedback);
   void placeHere(const FeedbackConstPtr& feedback);
@@ -91,7 +96,10 @@ class BrickPlacer {
   BrickTypeLibrary types_;
   std::string type_;
   Eigen::Isometry3d ghost_pose_ = Eigen::Isometry3d::Identity();
-  Eigen::Vector3d held_size_ = Eigen::Vector3d::Zero();  ///< Full extents of the held brick [m].
+  /// Bounds' full extents of the held brick [m].
+  Eigen::Vector3d held_size_ = Eigen::Vector3d::Zero();
+  /// The held brick's solid (brickSolid()); null: none held, or of no finite size.
+  std::shared_ptr<const ConvexSolid> held_solid_;
 
   ros::NodeHandle node_handle_;
   SimSession sim_;

@@ -65,6 +65,11 @@ struct CursorSteps {
 /// never sinks into the table; the table top itself for zero half extents
 /// (nothing held). Non-finite half extents count as zero.
 double cursorFloor(const Cursor& cursor, const Eigen::Vector3d& half_extents);
+/// The same for a held brick of any shape, `solid` in its frame at the
+/// cursor: the height at which its lowest point touches the table top
+/// (lowestCentreZ() of the solid); the table top for a solid that is not
+/// finite or has no part.
+double cursorFloor(const Cursor& cursor, const ConvexSolid& solid);
 
 /// The cursor after `command`: moved along its world axis, or turned about
 /// the world z axis (roll and pitch kept), its height never below

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <memory>
+
 #include <ros/ros.h>
 
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/teleop/keyboard_command.h"
 #include "brick_stack_sim/teleop/raw_terminal.h"
 #include "brick_stack_sim/teleop/sim_session.h"
@@ -35,9 +38,19 @@ class KeyboardTeleop {
   ros::NodeHandle node_handle_;
   SimSession sim_;
   Cursor cursor_;
-  /// Half extents of the held brick [m] (zero when none): the cursor stays
-  /// high enough for it to clear the table (cursorFloor()).
+  /// Loads the simulator's brick types (loadPlacerTypes()); without them
+  /// every brick counts as the box of its size.
+  void loadTypes();
+
+  /// The simulator's brick types, for the held brick's solid (brickSolid()).
+  BrickTypeLibrary types_;
+  /// Half the bounds' extents of the held brick [m] (zero when none): the
+  /// cursor arrow's length.
   Eigen::Vector3d held_half_extents_ = Eigen::Vector3d::Zero();
+  /// The held brick's solid in its frame (null when none, or of no finite
+  /// size): the cursor stays high enough for it to clear the table
+  /// (cursorFloor()).
+  std::shared_ptr<const ConvexSolid> held_solid_;
   ros::Publisher cursor_marker_;
 };
 
