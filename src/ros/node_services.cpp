@@ -45,7 +45,9 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
     return refuse(kPlaceBrickService, framed, &response);
   std::lock_guard<TicketMutex> lock(world_mutex_);
   std::string id;
-  if (Status added = simulation_->world().addBrick(placement, &id); !added)
+  // Bricks placed while paused are placed at one instant: the structure is
+  // judged as a whole when the world steps (docs/ros_interface.md, "~pause").
+  if (Status added = simulation_->world().addBrick(placement, &id, paused_); !added)
     return refuse(kPlaceBrickService, added, &response);
   response.success = true;
   response.id = id;

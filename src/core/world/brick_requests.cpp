@@ -26,42 +26,47 @@ Status BrickWorld::checkPlacement(const BrickPlacement& placement) const {
   return brick_stack_sim::checkPlacement(*state_, placement);
 }
 
-Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assigned_id) {
-  std::vector<std::string> ids;
-  const Status placed = addBricks({placement}, &ids).front();
-  if (placed && assigned_id) *assigned_id = ids.front();
-  return placed;
+Status BrickWorld::addBrick(const BrickPlacement& placement, std::string* assigned_id,
+                            bool more_to_come) {
+  if (Status ok = checkPlacement(placement); !ok) return ok;
+  BrickRecord* brick = placeBody(placement);
+  if (assigned_id) *assigned_id = brick->id;
+  judgeAtRest(brick, placement, more_to_come);
+  return Status::success();
 }
 
 std::vector<Status> BrickWorld::addBricks(const std::vector<BrickPlacement>& placements,
                                           std::vector<std::string>* assigned_ids) {
-  WorldState& w = *state_;
   std::vector<Status> statuses;
   if (assigned_ids) assigned_ids->assign(placements.size(), std::string());
-  bool judged_whole = true;  // the last judgement saw the structure complete
-  for (std::size_t i = 0; i < placements.size(); ++i) {
-    const BrickPlacement& placement = placements[i];
-    statuses.push_back(checkPlacement(placement));
-    if (!statuses.back()) continue;
-    BrickRecord* brick = placeBody(placement);
-    if (assigned_ids) (*assigned_ids)[i] = brick->id;
-    if (!w.model || !placement.linear_velocity.isZero() || !placement.angular_velocity.isZero())
-      continue;
-    Eigen::Vector3d low, high;
-    w.scene.bounds(brick->handle, &low, &high);
-    StabilityInput input;
-    input.placed.push_back(
-        {BodyMotion{brick->handle, centreOfMassAt(brick->type, placement.pose), brick->type.mass,
-                    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
-         restingContacts(w, brick->handle, brick->type.friction, w.solidOf(brick->handle), low,
-                         high)});
-    input.more_to_come = i + 1 < placements.size();
-    judged_whole = !input.more_to_come;
-    decide(&w, input);
-    if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
-  }
-  if (w.model && !judged_whole) decide(&w, StabilityInput());
+  for (std::size_t i = 0; i < placements.size(); ++i)
+    statuses.push_back(addBrick(placements[i], assigned_ids ? &(*assigned_ids)[i] : nullptr,
+                                i + 1 < placements.size()));
+  judgePlacements();
   return statuses;
+}
+
+void BrickWorld::judgePlacements() {
+  WorldState& w = *state_;
+  if (w.model && w.judgement_pending) decide(&w, StabilityInput());
+}
+
+void BrickWorld::judgeAtRest(BrickRecord* brick, const BrickPlacement& placement,
+                             bool more_to_come) {
+  WorldState& w = *state_;
+  if (!w.model || !placement.linear_velocity.isZero() || !placement.angular_velocity.isZero())
+    return;
+  Eigen::Vector3d low, high;
+  w.scene.bounds(brick->handle, &low, &high);
+  StabilityInput input;
+  input.placed.push_back(
+      {BodyMotion{brick->handle, centreOfMassAt(brick->type, placement.pose), brick->type.mass,
+                  Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+       restingContacts(w, brick->handle, brick->type.friction, w.solidOf(brick->handle), low,
+                       high)});
+  input.more_to_come = more_to_come;
+  decide(&w, input);
+  if (brick->mode == BrickMode::kDynamic) w.placed_at_rest.push_back(brick->handle);
 }
 
 BrickRecord* BrickWorld::placeBody(const BrickPlacement& placement) {

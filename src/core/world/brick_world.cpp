@@ -115,6 +115,7 @@ void runStabilityModel(WorldState* w) {
 
 void BrickWorld::step() {
   WorldState& w = *state_;
+  judgePlacements();  // bricks placed at one instant stand or fall before Bullet moves them
   StepContext step;
   for (const BrickRecord* brick : w.sets.movers()) step.awake += w.scene.isActive(brick->handle);
   ++w.cost.steps;

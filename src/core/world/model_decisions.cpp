@@ -39,6 +39,8 @@ StabilityDecisions decide(WorldState* w, const StabilityInput& input) {
   StabilityDecisions decisions;
   if (!w->model) return decisions;
   w->model->decide(input, &decisions);
+  // Judged as a whole unless more bricks of this instant are to come.
+  w->judgement_pending = input.more_to_come;
   applyDecisions(w, decisions);
   return decisions;
 }

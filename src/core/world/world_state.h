@@ -63,6 +63,10 @@ struct WorldState {
   /// The model has something new to look at without a Bullet step: a brick
   /// placed, removed, frozen or woken.
   bool model_changed = false;
+  /// Bricks were placed at rest with more to come at the same instant: the
+  /// model has not judged the structure as a whole yet (the next step or
+  /// request does).
+  bool judgement_pending = false;
   /// Movers placed at rest since the last step: Bullet has not moved them,
   /// so a brick placed at rest against one is judged with it (a V).
   std::vector<BodyHandle> placed_at_rest;

@@ -76,8 +76,14 @@ class BrickWorld {
   /// Would addBrick() accept this placement? Nothing changes.
   Status checkPlacement(const BrickPlacement& placement) const;
   /// Adds a brick; `assigned_id` (optional) receives its id. A brick placed
-  /// at rest is judged by the model at once.
-  Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr);
+  /// at rest is judged by the model at once, alone or with the bricks placed
+  /// at rest with it; `more_to_come`: more bricks follow at this instant,
+  /// and the structure is judged as a whole only when the last is in, at
+  /// the next step, or by judgePlacements() (a paused node places so).
+  Status addBrick(const BrickPlacement& placement, std::string* assigned_id = nullptr,
+                  bool more_to_come = false);
+  /// Judges the structure placed with `more_to_come` now; a no-op when none is pending.
+  void judgePlacements();
   /// Adds bricks at one instant, each checked and placed as by addBrick()
   /// in order (one refused leaves the others placed); those placed at rest
   /// are judged together once all are in, as one structure: an arch whose
@@ -169,6 +175,8 @@ class BrickWorld {
   Status remove(const std::string& id, SimEventKind kind, const std::string& reason);
   /// A checked placement's record and Bullet body, in the world's sets.
   BrickRecord* placeBody(const BrickPlacement& placement);
+  /// Has the model judge a brick just placed at rest (see addBrick()).
+  void judgeAtRest(BrickRecord* brick, const BrickPlacement& placement, bool more_to_come);
   std::unique_ptr<WorldState> state_;
 };
 
