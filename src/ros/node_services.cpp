@@ -46,7 +46,7 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   std::lock_guard<TicketMutex> lock(world_mutex_);
   std::string id;
   // Bricks placed while paused are placed at one instant: the structure is
-  // judged as a whole when the world steps (docs/ros_interface.md, "~pause").
+  // judged as a whole when the world steps (docs/ros_interface.md, "Services").
   if (Status added = simulation_->world().addBrick(placement, &id, paused_); !added)
     return refuse(kPlaceBrickService, added, &response);
   response.success = true;

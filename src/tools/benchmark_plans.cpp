@@ -62,12 +62,17 @@ BenchCase makeCase(const std::string& label, const std::string& scene, BenchMetr
 
 /// Structures built brick by brick as a user would, every mode side by
 /// side: the thesis's 25-layer tower (one brick a second) and its card
-/// house (a V every half second), each until 5 s after the last placement.
+/// house (a V every half second), each until 5 s after the last placement;
+/// and shapes other than boxes: an arch of 25 voussoirs placed at once and
+/// a building of 100 unit blocks, layer by layer.
 void addBuiltStructures(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
   plan->cases.push_back(
       makeCase("tower25_built", "tower25_built", BenchMetric::kSettled, 54.0, settings));
   plan->cases.push_back(
       makeCase("card_house", "card_house", BenchMetric::kSettled, 10.0, settings));
+  plan->cases.push_back(makeCase("arch25", "arch", BenchMetric::kSettled, 5.0, settings));
+  plan->cases.push_back(
+      makeCase("unit_blocks", "unit_blocks", BenchMetric::kSettled, 10.0, settings));
 }
 
 /// How long each motion runs: until it is over, or measured [s].
