@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/polygon_clip.h"
+
 namespace brick_stack_sim {
 
 namespace {
@@ -13,21 +15,6 @@ namespace {
 constexpr double kSameDirection = 1.0 - 1e-6;
 /// Points closer than this many gaps are one [-].
 constexpr double kSamePoint = 10.0;
-
-/// Keeps the part of `polygon` where `axis . (x - origin) <= limit`.
-std::vector<Eigen::Vector3d> clip(const std::vector<Eigen::Vector3d>& polygon,
-                                  const Eigen::Vector3d& axis, const Eigen::Vector3d& origin,
-                                  double limit) {
-  std::vector<Eigen::Vector3d> kept;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector3d& p = polygon[i];
-    const Eigen::Vector3d& q = polygon[(i + 1) % polygon.size()];
-    const double dp = axis.dot(p - origin) - limit, dq = axis.dot(q - origin) - limit;
-    if (dp <= 0.0) kept.push_back(p);
-    if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) kept.push_back(p + (q - p) * (dp / (dp - dq)));
-  }
-  return kept;
-}
 
 /// The face of `box` turned most against `direction`, as a polygon.
 std::vector<Eigen::Vector3d> faceAgainst(const OrientedBox& box, const Eigen::Vector3d& direction) {
@@ -67,8 +54,8 @@ void contactsOnFaces(const OrientedBox& reference, const OrientedBox& incident, 
       for (int side = 1; side <= 2 && !polygon.empty(); ++side) {
         const int k = (axis + side) % 3;
         const double limit = reference.half_extents[k] + max_gap;
-        polygon = clip(polygon, r.col(k), reference.pose.translation(), limit);
-        if (!polygon.empty()) polygon = clip(polygon, -r.col(k), reference.pose.translation(), limit);
+        polygon = clipPolygon(polygon, r.col(k), reference.pose.translation(), limit);
+        if (!polygon.empty()) polygon = clipPolygon(polygon, -r.col(k), reference.pose.translation(), limit);
       }
       BoxContactFace face;
       face.normal = normal;

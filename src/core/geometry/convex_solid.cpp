@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "brick_stack_sim/core/geometry/polygon2d.h"
+#include "geometry/polygon_clip.h"
 
 namespace brick_stack_sim {
 
@@ -126,22 +127,6 @@ std::vector<Eigen::Vector3d> loopPoints(const ConvexPolyhedron& polyhedron, cons
   return points;
 }
 
-/// Keeps the part of `polygon` where `axis . (x - origin) <= limit`, as box_contact.cpp.
-std::vector<Eigen::Vector3d> clip(const std::vector<Eigen::Vector3d>& polygon,
-                                  const Eigen::Vector3d& axis, const Eigen::Vector3d& origin,
-                                  double limit) {
-  std::vector<Eigen::Vector3d> kept;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector3d& p = polygon[i];
-    const Eigen::Vector3d& q = polygon[(i + 1) % polygon.size()];
-    const double dp = axis.dot(p - origin) - limit, dq = axis.dot(q - origin) - limit;
-    if (dp <= 0.0) kept.push_back(p);
-    if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0))
-      kept.push_back(p + (q - p) * (dp / (dp - dq)));
-  }
-  return kept;
-}
-
 /// The face of `incident` turned most against `face` of `reference`, clipped
 /// by the planes through the reference face's edges along its normal, `max_gap` outside them.
 std::vector<Eigen::Vector3d> clippedIncidentFace(const ConvexPolyhedron& reference,
@@ -155,7 +140,7 @@ std::vector<Eigen::Vector3d> clippedIncidentFace(const ConvexPolyhedron& referen
   for (std::size_t i = 0; i < rim.size() && !polygon.empty(); ++i) {
     // Counter-clockwise seen from outside: the edge crossed with the normal points out.
     const Eigen::Vector3d side = (rim[(i + 1) % rim.size()] - rim[i]).cross(face.normal);
-    if (side.norm() > 0.0) polygon = clip(polygon, side.normalized(), rim[i], max_gap);
+    if (side.norm() > 0.0) polygon = clipPolygon(polygon, side.normalized(), rim[i], max_gap);
   }
   return polygon;
 }

@@ -134,33 +134,45 @@ double leastThicknessByThrustLine(int n) {
 
 // --- The simulation ----------------------------------------------------------
 
-/// Whether an arch of `n` voussoirs and thickness `ratio` R, placed at once
-/// at rest, stands in `mode`: every voussoir frozen and none moved after
-/// half a second.
-bool archStands(const std::string& mode, int n, double ratio) {
+/// A world in `mode` on a table as rough as the voussoirs, and in
+/// `bricks` an arch of `n` of them, `ratio` R thick.
+std::unique_ptr<BrickWorld> archWorld(const std::string& mode, int n, double ratio,
+                                      std::vector<ScheduledBrick>* bricks) {
   ArchParams params;
   params.voussoirs = n;
   params.radius = kRadius;
   params.thickness = ratio * kRadius;
   params.friction = kFriction;
   std::vector<BrickType> types;
-  std::vector<ScheduledBrick> bricks;
-  EXPECT_TRUE(generateArch(params, &types, &bricks).ok);
+  EXPECT_TRUE(generateArch(params, &types, bricks).ok);
   BrickTypeLibrary library = test::packageTypes();
   EXPECT_TRUE(library.add(types[0]).ok);
   WorldOptions options = test::optionsFor(mode);
   options.table.friction = kFriction;
   std::unique_ptr<BrickWorld> world;
   EXPECT_TRUE(BrickWorld::create(options, library, &world).ok);
+  return world;
+}
+
+/// How many voussoirs stand after 0.3 s: frozen and where they were placed.
+int standing(BrickWorld* world) {
+  test::runFor(world, 0.3);
+  int count = 0;
+  for (const BrickSnapshot& brick : world->snapshot())
+    count += brick.state != BrickState::kDynamic &&
+             (brick.pose.translation() - brick.placed_pose.translation()).norm() < 1e-4;
+  return count;
+}
+
+/// Whether an arch of `n` voussoirs and thickness `ratio` R, placed at once
+/// at rest, stands in `mode`.
+bool archStands(const std::string& mode, int n, double ratio) {
+  std::vector<ScheduledBrick> bricks;
+  auto world = archWorld(mode, n, ratio, &bricks);
   std::vector<BrickPlacement> placements;
   for (const ScheduledBrick& brick : bricks) placements.push_back(brick.placement);
   for (const Status& placed : world->addBricks(placements)) EXPECT_TRUE(placed.ok) << placed.message;
-  test::runFor(world.get(), 0.5);
-  for (const BrickSnapshot& brick : world->snapshot())
-    if (brick.state == BrickState::kDynamic ||
-        (brick.pose.translation() - brick.placed_pose.translation()).norm() > 1e-4)
-      return false;
-  return true;
+  return standing(world.get()) == n;
 }
 
 double leastThicknessSimulated(const std::string& mode, int n, double low, double high) {
@@ -190,31 +202,15 @@ TEST_P(ArchInMode, StandsAboveTheThrustLinesLeastThicknessAndFallsBelowIt) {
   }
 }
 
-/// How many of an arch's voussoirs stand after 0.3 s, placed by `place`.
+/// How many of an arch's voussoirs stand, placed by `place` (`last`: the
+/// last of them).
 int standingVoussoirs(const std::string& mode, int n,
                       const std::function<void(BrickWorld*, const BrickPlacement&, bool last)>& place) {
-  ArchParams params;
-  params.voussoirs = n;
-  params.radius = kRadius;
-  params.thickness = 0.15 * kRadius;  // well above the least thickness
-  params.friction = kFriction;
-  std::vector<BrickType> types;
   std::vector<ScheduledBrick> bricks;
-  EXPECT_TRUE(generateArch(params, &types, &bricks).ok);
-  BrickTypeLibrary library = test::packageTypes();
-  EXPECT_TRUE(library.add(types[0]).ok);
-  WorldOptions options = test::optionsFor(mode);
-  options.table.friction = kFriction;
-  std::unique_ptr<BrickWorld> world;
-  EXPECT_TRUE(BrickWorld::create(options, library, &world).ok);
+  auto world = archWorld(mode, n, 0.15, &bricks);  // well above the least thickness
   for (std::size_t i = 0; i < bricks.size(); ++i)
     place(world.get(), bricks[i].placement, i + 1 == bricks.size());
-  test::runFor(world.get(), 0.3);
-  int standing = 0;
-  for (const BrickSnapshot& brick : world->snapshot())
-    standing += brick.state != BrickState::kDynamic &&
-                (brick.pose.translation() - brick.placed_pose.translation()).norm() < 1e-4;
-  return standing;
+  return standing(world.get());
 }
 
 // Without centering an arch cannot be built voussoir by voussoir: the half
