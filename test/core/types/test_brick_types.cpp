@@ -40,7 +40,8 @@ TEST(BrickTypes, PackageUrdfHasAtLeastTwoMoreTypes) {
   EXPECT_DOUBLE_EQ(cube->size.x(), cube->size.z());
   // The root link that ties the URDF tree together is not a brick type.
   EXPECT_EQ(types.find("bricks_root"), nullptr);
-  EXPECT_EQ(types.names().size(), 3u);
+  // The KAPLA family and the ten unit blocks (test_unit_blocks.cpp).
+  EXPECT_EQ(types.names().size(), 13u);
 }
 
 const char* kOneBrickUrdf = R"(<robot name="t">
