@@ -83,5 +83,39 @@ TEST(SceneShapes, BadGeometryIsRefusedWithTheTypesPlace) {
   }
 }
 
+TEST(SceneShapes, TypesWrittenAsASceneReadBackTheSame) {
+  Scene scene;
+  ASSERT_TRUE(parseScene(R"(
+types:
+  plank: {size: [0.1, 0.02, 0.01], mass: 0.01, friction: 0.7}
+  can: {shape: cylinder, radius: 0.02, length: 0.06, mass: 0.08, rolling_friction: 0.0001}
+  tee: {shape: compound, mass: 0.02, restitution: 0.1, parts: [
+          {shape: box, size: [0.06, 0.02, 0.01], position: [0, 0, 0.035], rpy: [0.1, 0.2, 0.3]},
+          {shape: cylinder, radius: 0.01, length: 0.03, position: [0, 0, 0.015]}]}
+generator: {name: arch, voussoirs: 9, radius: 0.1, thickness: 0.02}
+bricks: []
+)",
+                         "written", test::packageTypes(), &scene)
+                  .ok);
+  Scene read;
+  const Status s = parseScene(typesAsScene(scene.types), "read", test::packageTypes(), &read);
+  ASSERT_TRUE(s.ok) << s.message << "\n" << typesAsScene(scene.types);
+  ASSERT_EQ(read.types.size(), scene.types.size());
+  for (const BrickType& original : scene.types) {
+    const BrickType* copy = sceneType(read, original.name);
+    ASSERT_NE(copy, nullptr) << original.name;
+    EXPECT_EQ(copy->shape.kind, original.shape.kind) << original.name;
+    EXPECT_EQ(copy->mass, original.mass) << original.name;
+    EXPECT_EQ(copy->friction, original.friction) << original.name;
+    EXPECT_EQ(copy->restitution, original.restitution) << original.name;
+    EXPECT_EQ(copy->rolling_friction, original.rolling_friction) << original.name;
+    EXPECT_NEAR((copy->size - original.size).norm(), 0.0, 1e-12) << original.name;
+    EXPECT_NEAR((copy->inertia - original.inertia).norm(), 0.0, 1e-9 * original.inertia.norm());
+    EXPECT_NEAR((copy->mass_frame.translation() - original.mass_frame.translation()).norm(), 0.0,
+                1e-12)
+        << original.name;
+  }
+}
+
 }  // namespace
 }  // namespace brick_stack_sim

@@ -73,4 +73,9 @@ Status loadScene(const std::string& name_or_path, const std::vector<std::string>
 /// Adds the scene's own types to `types` (the scene's win on a name clash).
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
 
+/// A scene of `types` alone and no bricks, as YAML that parseScene() reads
+/// back into the same shapes, masses and materials (inertia from the solid):
+/// how a client hands a simulator the types a scene defines.
+std::string typesAsScene(const std::vector<BrickType>& types);
+
 }  // namespace brick_stack_sim
