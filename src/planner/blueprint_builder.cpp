@@ -1,11 +1,16 @@
 #include "brick_stack_sim/planner/blueprint_builder.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
 
 #include <ros/console.h>
 #include <ros/time.h>
 
+#include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/conversions.h"
@@ -138,6 +143,7 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
   const ros::Time start = ros::Time::now();
   // Sim time reads as the simulator's own; wall time from the build's start.
   epoch_ = ros::Time::isSimTime() ? ros::Time() : start;
+  if (Status handed = handOverTypes(scene); !handed) return handed;
   const std::vector<ScheduledBrick>& bricks = scene.bricks;
   say("building scene %s: %zu bricks over %.1f s", scene.name.c_str(), bricks.size(),
       bricks.empty() ? 0.0 : bricks.back().at);
@@ -171,6 +177,27 @@ Status BlueprintBuilder::build(const Scene& scene, BuildOutcome* outcome) {
   outcome->summary = ledger_.summary();
   outcome->met = ledger_.met(scene.expect, &outcome->verdict);
   outcome->summary_line = formatSummary(scene.name, outcome->summary, clock(ros::Time::now()));
+  return Status::success();
+}
+
+Status BlueprintBuilder::handOverTypes(const Scene& scene) {
+  if (scene.types.empty()) return Status::success();
+  std::string names;
+  for (const BrickType& type : scene.types) names += (names.empty() ? "" : ", ") + type.name;
+  char path[] = "/tmp/brick_stack_sim_types_XXXXXX.yaml";
+  const int fd = ::mkstemps(path, 5);
+  if (fd < 0) return Status::error("cannot write the scene's types to /tmp for the simulator");
+  const std::string text = typesAsScene(scene.types);
+  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  ::close(fd);
+  client::Reply<ResetScene::Response> reset;
+  if (written) reset = sim_.reset(path);
+  std::remove(path);
+  if (!written) return Status::error("cannot write the scene's types to " + std::string(path));
+  if (!reset.ok)
+    return Status::error("the simulator did not take the scene's types (" + names +
+                         "): " + failure(reset));
+  say("the scene defines brick types of its own (%s): handed to the simulator", names.c_str());
   return Status::success();
 }
 

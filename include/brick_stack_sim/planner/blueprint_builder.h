@@ -80,6 +80,11 @@ class BlueprintBuilder {
   /// that two leaning bricks arrive together); appends to `structure` the ids
   /// the simulator gave those it accepted that were not thrown (an empty id
   /// in the scene becomes brick_<n>).
+  /// A scene that defines brick types of its own (an arch's voussoir) has
+  /// them in a scene of types alone, which the simulator loads through
+  /// ~reset: it knows them for ~place_brick then, on an empty table. The
+  /// file is shared by path, so the simulator must run on this machine.
+  Status handOverTypes(const Scene& scene);
   Status placeGroup(const std::vector<ScheduledBrick>& bricks, std::size_t first, std::size_t last,
                     std::vector<std::string>* structure);
   /// Looks at ~get_bricks and reports what fell.
