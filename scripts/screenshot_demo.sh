@@ -11,7 +11,8 @@
 # Environment: SCREENSHOT_MASTER_PORT (default 11432), SCREENSHOT_RENDER_WAIT
 # (wall seconds RViz gets to draw the final state, default 10),
 # SCREENSHOT_HIDE (marker namespaces to untick in RViz, e.g. "bricks" for the
-# view inside the stack; default none).
+# view inside the stack; default none), SCREENSHOT_VIEW (the camera's distance
+# and focal height [m], e.g. "1.5 0.2" for a large scene; default demo.rviz's).
 #
 # Sim time is exact and independent of the machine: once RViz listens, the
 # script pauses the simulator, restarts the scene (~reset) and advances it
@@ -35,15 +36,21 @@ mkdir -p "$(dirname "${output}")" "${workspace}/log"
 # shellcheck source=scripts/screenshot_session.sh
 source "${repo_root}/scripts/screenshot_session.sh" 11432
 
-# config/demo.rviz, or a copy of it with SCREENSHOT_HIDE's namespaces unticked.
+# config/demo.rviz, or a copy of it with SCREENSHOT_HIDE's namespaces unticked
+# and the camera SCREENSHOT_VIEW ("DISTANCE FOCAL_Z" [m]) away.
 rviz_config=()
-if [[ -n "${SCREENSHOT_HIDE:-}" ]]; then
+if [[ -n "${SCREENSHOT_HIDE:-}" || -n "${SCREENSHOT_VIEW:-}" ]]; then
   hidden_config="$(mktemp --suffix=.rviz)"
   extra_cleanup='rm -f "${hidden_config}"'
   cp "${repo_root}/config/demo.rviz" "${hidden_config}"
-  for namespace in ${SCREENSHOT_HIDE}; do
+  for namespace in ${SCREENSHOT_HIDE:-}; do
     sed -i "s/^\( *\)${namespace}: true\$/\1${namespace}: false/" "${hidden_config}"
   done
+  if [[ -n "${SCREENSHOT_VIEW:-}" ]]; then
+    read -r view_distance view_z <<<"${SCREENSHOT_VIEW}"
+    sed -i "s/^\( *\)Distance: .*/\1Distance: ${view_distance}/" "${hidden_config}"
+    sed -i "/Focal Point:/,/Z:/ s/^\( *\)Z: .*/\1Z: ${view_z}/" "${hidden_config}"
+  fi
   rviz_config=(rviz_config:="${hidden_config}")
 fi
 

@@ -13,11 +13,6 @@ namespace ros_adapter {
 
 int brickMarkerId(const BrickSnapshot& brick) { return static_cast<int>(brick.serial); }
 
-std::string brickPartNamespace(std::size_t part) {
-  return part == 0 ? std::string(kBrickMarkerNamespace)
-                   : kBrickPartMarkerNamespacePrefix + std::to_string(part);
-}
-
 int edgeMarkerId(const BrickSnapshot& brick) { return edgeMarkerId(brick.serial); }
 
 int edgeMarkerId(unsigned serial) { return static_cast<int>(serial / kBricksPerEdgeMarker); }
@@ -142,6 +137,36 @@ void appendEdges(const BrickSnapshot& brick, std::vector<geometry_msgs::Point>* 
     appendPartOutline(part, brick.pose, kBrickEdgeInflation, lines);
 }
 
+namespace {
+
+/// Appends the triangles of `polyhedron`'s faces carried by `placement`,
+/// counter-clockwise fans, so that every triangle faces out as RViz lights it.
+void appendFaceTriangles(const ConvexPolyhedron& polyhedron, const Eigen::Isometry3d& placement,
+                         std::vector<geometry_msgs::Point>* points) {
+  for (const ConvexPolyhedron::Face& face : polyhedron.faces)
+    for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
+      for (int vertex : {face.loop[0], face.loop[i], face.loop[i + 1]})
+        points->push_back(toPointMsg(placement * polyhedron.vertices[vertex]));
+}
+
+/// A compound brick's parts as one TRIANGLE_LIST in the brick's frame: one
+/// marker per brick, however many parts.
+bool compoundBodyMarker(const ConvexSolid& solid, const Eigen::Isometry3d& solid_pose,
+                        visualization_msgs::Marker* marker) {
+  std::vector<geometry_msgs::Point> points;
+  for (const ConvexPart& part : solid.parts)
+    if (drawablePart(part, partPose(solid_pose, part)))
+      appendFaceTriangles(part.polyhedron, part.pose, &points);
+  if (points.empty() || !solid_pose.matrix().allFinite()) return false;
+  marker->type = visualization_msgs::Marker::TRIANGLE_LIST;
+  marker->scale = toVectorMsg(Eigen::Vector3d::Ones());  // the points are taken as they are
+  marker->points = std::move(points);
+  marker->pose = toPoseMsg(solid_pose);
+  return true;
+}
+
+}  // namespace
+
 bool partBodyMarker(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
                     visualization_msgs::Marker* marker) {
   using visualization_msgs::Marker;
@@ -155,13 +180,8 @@ bool partBodyMarker(const ConvexPart& part, const Eigen::Isometry3d& solid_pose,
     const double diameter = 2.0 * part.cylinder_radius;
     marker->scale = toVectorMsg(Eigen::Vector3d(diameter, diameter, part.cylinder_length));
   } else {
-    const ConvexPolyhedron& hull = part.polyhedron;
     std::vector<geometry_msgs::Point> points;
-    // Counter-clockwise fans keep every triangle facing out, as RViz lights it.
-    for (const ConvexPolyhedron::Face& face : hull.faces)
-      for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
-        for (int vertex : {face.loop[0], face.loop[i], face.loop[i + 1]})
-          points.push_back(toPointMsg(hull.vertices[vertex]));
+    appendFaceTriangles(part.polyhedron, Eigen::Isometry3d::Identity(), &points);
     if (points.empty()) return false;  // RViz refuses an empty TRIANGLE_LIST
     marker->type = Marker::TRIANGLE_LIST;
     marker->scale = toVectorMsg(Eigen::Vector3d::Ones());  // the points are taken as they are
@@ -201,14 +221,14 @@ void appendBodyMarkers(const BrickSnapshot& brick, const std::string& frame_id,
     array->markers.push_back(std::move(box));
     return;
   }
-  const std_msgs::ColorRGBA color = brickColor(brick);
-  for (std::size_t i = 0; i < brick.solid->parts.size(); ++i) {
-    const std::string ns = brickPartNamespace(i);
-    Marker body = newMarker(frame_id, stamp, ns.c_str(), brickMarkerId(brick), Marker::CUBE);
-    if (!partBodyMarker(brick.solid->parts[i], brick.pose, &body)) continue;
-    body.color = color;
-    array->markers.push_back(std::move(body));
-  }
+  Marker body =
+      newMarker(frame_id, stamp, kBrickMarkerNamespace, brickMarkerId(brick), Marker::CUBE);
+  const bool drawn = brick.solid->parts.size() == 1
+                         ? partBodyMarker(brick.solid->parts[0], brick.pose, &body)
+                         : compoundBodyMarker(*brick.solid, brick.pose, &body);
+  if (!drawn) return;
+  body.color = brickColor(brick);
+  array->markers.push_back(std::move(body));
 }
 
 visualization_msgs::MarkerArray makeBrickMarkers(const std::vector<BrickSnapshot>& bricks,

@@ -23,16 +23,6 @@ namespace ros_adapter {
 /// its whole life and a new brick never inherits an old one's.
 int brickMarkerId(const BrickSnapshot& brick);
 
-/// The namespace of the body marker of part `part` of a brick's solid.
-/// Id scheme: every part of a brick has the id brickMarkerId(); part 0 (the
-/// only part of a box, a cylinder or a hull) is in kBrickMarkerNamespace,
-/// part k >= 1 of a compound in kBrickPartMarkerNamespacePrefix + k
-/// ("bricks_part_1", ...). Within a namespace the ids are serials, unique
-/// among the bricks, and within a brick each part has its own namespace:
-/// no two markers share a namespace and id, for any serial (no arithmetic
-/// on ids that could overflow) and any number of parts.
-std::string brickPartNamespace(std::size_t part);
-
 /// Segments of each cylinder cap rim in the outlines and of nothing else [-]:
 /// a circle at tower scale, at 128 points a cylinder.
 constexpr int kCylinderRimSegments = 32;
@@ -76,9 +66,11 @@ std::vector<visualization_msgs::Marker> solidBodyMarkers(const ConvexSolid* soli
 /// A brick's body, opaque, brickColor(brick), id brickMarkerId(): without a
 /// solid, or with one box part centred on the brick frame, a CUBE (scale =
 /// size [m], pose of its centre) in kBrickMarkerNamespace, as bricks were
-/// before shapes; else one partBodyMarker() per part, part k in
-/// brickPartNamespace(k). Nothing for a brick with a non-finite pose or
-/// size, nor for a part that is not finite.
+/// before shapes; else its one part's partBodyMarker(), or for a compound
+/// one TRIANGLE_LIST of every part's faces in the brick's frame: one body
+/// marker per brick, so its id is its serial in kBrickMarkerNamespace.
+/// Nothing for a brick with a non-finite pose or size, nor for a part that
+/// is not finite.
 void appendBodyMarkers(const BrickSnapshot& brick, const std::string& frame_id,
                        const ros::Time& stamp, visualization_msgs::MarkerArray* array);
 

@@ -21,12 +21,9 @@ namespace ros_adapter {
 // bricks, the stability layer, and what makes the picture readable. Each its
 // own namespace, so that RViz's MarkerArray display can switch it off on its
 // own.
-/// A body per brick (its box, cylinder or hull), opaque wood tinted by
-/// state; of a compound, its first part.
+/// A body per brick (its box, cylinder, hull, or a compound's parts as
+/// one triangle list), opaque wood tinted by state.
 constexpr char kBrickMarkerNamespace[] = "bricks";
-/// Part k >= 1 of a compound brick: namespace "bricks_part_<k>", one per
-/// part index, same id as the brick's first part (brickPartNamespace()).
-constexpr char kBrickPartMarkerNamespacePrefix[] = "bricks_part_";
 /// A ray per brick from its COM-above straight down to its support height.
 constexpr char kComAboveMarkerNamespace[] = "com_above";
 /// Per brick: its support patches, and their combined hull.

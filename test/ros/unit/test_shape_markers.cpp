@@ -157,7 +157,6 @@ TEST(ShapeMarkers, ACylinderIsOneCylinderOfItsRadiusAndLength) {
   EXPECT_TRUE(fromPoseMsg(body.pose).isApprox(brick.pose, 1e-12));
   EXPECT_EQ(body.color.a, 1.0f);
   EXPECT_EQ(body.color.r, brickColor(brick).r);
-  EXPECT_TRUE(added(array, brickPartNamespace(1)).empty());
   // The outline: the two cap rims and nothing else, each point on the rim
   // circle kBrickEdgeInflation outside the cylinder.
   const Marker& edges = edgesOf(array);
@@ -222,7 +221,7 @@ TEST(ShapeMarkers, AHullIsATriangleListOfItsFacesFacingOut) {
   EXPECT_EQ(edgesOf(array).points.size(), 2u * 9u);
 }
 
-TEST(ShapeMarkers, ACompoundIsOneMarkerPerPartWithIdsNoOtherBrickHas) {
+TEST(ShapeMarkers, ACompoundIsOneTriangleListOfAllItsPartsWithTheBricksId) {
   const BrickType hammer = compoundType();
   const BrickType peg = cylinderType();
   const std::vector<BrickSnapshot> bricks = {brickOf(hammer, 4, turnedPose({0.0, 0.0, 0.02})),
@@ -230,11 +229,8 @@ TEST(ShapeMarkers, ACompoundIsOneMarkerPerPartWithIdsNoOtherBrickHas) {
                                              brickOf(peg, 6, turnedPose({0.2, 0.0, 0.03}))};
   const MarkerArray array = makeBrickMarkers(bricks, "world", ros::Time(1.0));
   expectAllFinite(array);
-  // Two parts: the box in `bricks`, the cylinder in `bricks_part_1`, same id.
-  EXPECT_EQ(brickPartNamespace(0), kBrickMarkerNamespace);
-  EXPECT_EQ(brickPartNamespace(1), "bricks_part_1");
+  // One body per brick, whatever its parts, all in `bricks`.
   EXPECT_EQ(added(array, kBrickMarkerNamespace).size(), 3u);
-  EXPECT_EQ(added(array, brickPartNamespace(1)).size(), 2u);
   std::set<std::pair<std::string, int>> keys;
   for (const Marker& m : array.markers) {
     if (m.action != Marker::ADD) continue;
@@ -243,24 +239,21 @@ TEST(ShapeMarkers, ACompoundIsOneMarkerPerPartWithIdsNoOtherBrickHas) {
   const BrickSnapshot& first = bricks[0];
   for (const Marker* m : added(array, kBrickMarkerNamespace)) {
     if (m->id != 4) continue;
-    EXPECT_EQ(m->type, Marker::CUBE);
-    EXPECT_NEAR(m->scale.x, 0.04, 1e-15);
-    EXPECT_NEAR(m->scale.y, 0.02, 1e-15);
-    EXPECT_NEAR(m->scale.z, 0.01, 1e-15);
-    const Eigen::Vector3d centre = first.pose * Eigen::Vector3d(-0.02, 0.0, 0.0);
-    EXPECT_TRUE(fromPoseMsg(m->pose).isApprox(
-        Eigen::Translation3d(centre) * Eigen::Isometry3d(first.pose.linear()), 1e-12));
-  }
-  for (const Marker* m : added(array, brickPartNamespace(1))) {
-    if (m->id != 4) continue;
-    EXPECT_EQ(m->type, Marker::CYLINDER);
-    EXPECT_NEAR(m->scale.x, 0.02, 1e-15);
-    EXPECT_NEAR(m->scale.z, 0.02, 1e-15);
-    const Eigen::Isometry3d part = fromPoseMsg(m->pose);
-    EXPECT_TRUE(part.translation().isApprox(first.pose * Eigen::Vector3d(0.03, 0.0, 0.0), 1e-12));
-    // The cylinder's axis lies along the brick's y.
-    EXPECT_TRUE(
-        part.linear().col(2).cwiseAbs().isApprox(first.pose.linear().col(1).cwiseAbs(), 1e-12));
+    EXPECT_EQ(m->type, Marker::TRIANGLE_LIST);
+    EXPECT_TRUE(fromPoseMsg(m->pose).isApprox(first.pose, 1e-12));
+    // The box part's 6 faces of 2 triangles and the cylinder's prism: its
+    // sides of 2 triangles each and two caps of (sides - 2).
+    const ConvexPolyhedron& prism = hammer.solid->parts.at(1).polyhedron;
+    const std::size_t sides = prism.faces.size() - 2;
+    EXPECT_EQ(m->points.size(), 3u * (12u + 2u * sides + 2u * (sides - 2u)));
+    // The box part spans x in [-0.04, 0] of the brick's frame, the cylinder
+    // part [0.02, 0.04]: every point lies in one of them.
+    for (const geometry_msgs::Point& p : m->points) {
+      const Eigen::Vector3d local = toEigen(p);
+      const bool in_box = local.x() >= -0.04 - 1e-12 && local.x() <= 1e-12;
+      const bool in_cylinder = local.x() >= 0.02 - 1e-12 && local.x() <= 0.04 + 1e-12;
+      EXPECT_TRUE(in_box || in_cylinder) << local.transpose();
+    }
   }
   // Outlines: per hammer a box's 12 edges and two rims, then the peg's rims.
   const std::size_t rims = 2u * 2u * kCylinderRimSegments;
