@@ -9,7 +9,6 @@
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 
-
 #include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"

@@ -58,8 +58,7 @@ bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, cons
   const btScalar offset = plane.getPlaneConstant() + normal.dot(at_plane.getOrigin());
   // The point of a that leads towards the plane (the support includes the
   // margin, which btBoxShape keeps inside its outer size).
-  const btVector3 deepest =
-      from(a.localGetSupportingVertex(from.getBasis().transpose() * -normal));
+  const btVector3 deepest = from(a.localGetSupportingVertex(from.getBasis().transpose() * -normal));
   const btScalar distance = normal.dot(deepest) - offset;
   const btScalar closing = -normal.dot(to.getOrigin() - from.getOrigin());
   if (!(closing > 0) || distance > closing) return false;
@@ -72,8 +71,8 @@ bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, cons
   return true;
 }
 
-std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btCollisionShape& shape,
-                                                                       const btTransform& at) {
+std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(
+    const btCollisionShape& shape, const btTransform& at) {
   std::vector<std::pair<const btConvexShape*, btTransform>> pieces;
   if (shape.isConvex()) {
     pieces.emplace_back(static_cast<const btConvexShape*>(&shape), at);
@@ -101,10 +100,9 @@ bool surfaceGapOfShapes(const btCollisionShape& a, const btTransform& at_a,
   return found;
 }
 
-bool timeOfImpactOfShapes(const btCollisionShape& a, const btTransform& from,
-                          const btTransform& to, const btCollisionShape& b,
-                          const btTransform& at_b, btScalar tolerance, btScalar* fraction,
-                          SurfaceGap* gap) {
+bool timeOfImpactOfShapes(const btCollisionShape& a, const btTransform& from, const btTransform& to,
+                          const btCollisionShape& b, const btTransform& at_b, btScalar tolerance,
+                          btScalar* fraction, SurfaceGap* gap) {
   // The pieces of a keep their places in a while a translates.
   const btTransform moved = to * from.inverse();
   bool found = false;

@@ -44,8 +44,8 @@ bool timeOfImpactWithPlane(const btConvexShape& a, const btTransform& from, cons
 
 /// The convex pieces of `shape` at `at`: the shape itself when convex, a
 /// compound's children (at their places) when compound, none otherwise.
-std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btCollisionShape& shape,
-                                                                       const btTransform& at);
+std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(
+    const btCollisionShape& shape, const btTransform& at);
 
 /// surfaceGap() of any two shapes made of convex pieces: the least over
 /// the pairs of pieces. False when no pair could be measured.
@@ -54,9 +54,8 @@ bool surfaceGapOfShapes(const btCollisionShape& a, const btTransform& at_a,
 
 /// timeOfImpact() (or timeOfImpactWithPlane() against a plane `b`) of any
 /// shapes made of convex pieces: the earliest over the pairs of pieces.
-bool timeOfImpactOfShapes(const btCollisionShape& a, const btTransform& from,
-                          const btTransform& to, const btCollisionShape& b,
-                          const btTransform& at_b, btScalar tolerance, btScalar* fraction,
-                          SurfaceGap* gap);
+bool timeOfImpactOfShapes(const btCollisionShape& a, const btTransform& from, const btTransform& to,
+                          const btCollisionShape& b, const btTransform& at_b, btScalar tolerance,
+                          btScalar* fraction, SurfaceGap* gap);
 
 }  // namespace brick_stack_sim

@@ -39,7 +39,8 @@ void contactsOnFaces(const OrientedBox& reference, const OrientedBox& incident, 
   for (int axis = 0; axis < 3; ++axis) {
     for (double sign : {1.0, -1.0}) {
       const Eigen::Vector3d n = sign * r.col(axis);
-      const Eigen::Vector3d on_face = reference.pose.translation() + n * reference.half_extents[axis];
+      const Eigen::Vector3d on_face =
+          reference.pose.translation() + n * reference.half_extents[axis];
       double nearest = n.dot(incident_corners[0] - on_face);
       for (const Eigen::Vector3d& corner : incident_corners)
         nearest = std::min(nearest, n.dot(corner - on_face));
@@ -55,7 +56,8 @@ void contactsOnFaces(const OrientedBox& reference, const OrientedBox& incident, 
         const int k = (axis + side) % 3;
         const double limit = reference.half_extents[k] + max_gap;
         polygon = clipPolygon(polygon, r.col(k), reference.pose.translation(), limit);
-        if (!polygon.empty()) polygon = clipPolygon(polygon, -r.col(k), reference.pose.translation(), limit);
+        if (!polygon.empty())
+          polygon = clipPolygon(polygon, -r.col(k), reference.pose.translation(), limit);
       }
       BoxContactFace face;
       face.normal = normal;

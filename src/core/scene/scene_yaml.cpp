@@ -116,8 +116,8 @@ void runGenerator(const YAML::Node& node, const TableOptions& table, BrickTypeLi
                   Scene* scene) {
   const std::string where = "generator";
   std::vector<BrickType> defined;
-  findGenerator(node, where).read(node, where, GeneratorContext{table, *types, &defined},
-                                  &scene->bricks);
+  findGenerator(node, where)
+      .read(node, where, GeneratorContext{table, *types, &defined}, &scene->bricks);
   for (BrickType& type : defined) {
     if (Status added = types->add(type); !added) fail(where, added.message);
     scene->types.push_back(std::move(type));
@@ -240,7 +240,8 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     if (root["types"]) {
       if (!root["types"].IsMap()) fail("types", "expected a map of name: {size, mass, ...}");
       for (const auto& entry : root["types"])
-        result.types.push_back(scene_yaml::readSceneType(entry.first.as<std::string>(), entry.second));
+        result.types.push_back(
+            scene_yaml::readSceneType(entry.first.as<std::string>(), entry.second));
     }
     BrickTypeLibrary all_types = types;
     if (Status merged = mergeSceneTypes(result, &all_types); !merged) fail("types", merged.message);

@@ -10,8 +10,8 @@ namespace {
 
 ShapeKind readKind(const YAML::Node& node, const std::string& where) {
   const std::string kind = readString(node, "shape", where, "box");
-  for (ShapeKind k : {ShapeKind::kBox, ShapeKind::kCylinder, ShapeKind::kConvex,
-                      ShapeKind::kCompound})
+  for (ShapeKind k :
+       {ShapeKind::kBox, ShapeKind::kCylinder, ShapeKind::kConvex, ShapeKind::kCompound})
     if (kind == toString(k)) return k;
   fail(where + ".shape", "'" + kind + "' is no shape: box, cylinder, convex or compound");
 }
@@ -19,8 +19,7 @@ ShapeKind readKind(const YAML::Node& node, const std::string& where) {
 std::vector<Eigen::Vector3d> readVertices(const YAML::Node& node, const std::string& where) {
   const YAML::Node list = node["vertices"];
   const std::string field = where + ".vertices";
-  if (!list || !list.IsSequence())
-    fail(field, "expected a list of points [[x, y, z], ...] [m]");
+  if (!list || !list.IsSequence()) fail(field, "expected a list of points [[x, y, z], ...] [m]");
   if (list.size() > kMaxSceneVertices)
     fail(field, "more than " + std::to_string(kMaxSceneVertices) + " points");
   std::vector<Eigen::Vector3d> vertices;
@@ -42,7 +41,8 @@ void readPartGeometry(const YAML::Node& node, ShapeKind kind, const std::string&
     if (!node["size"]) fail(where, "a box needs 'size' [m]");
     part->size = readVector<3>(node, "size", where, Eigen::Vector3d::Zero());
   } else if (kind == ShapeKind::kCylinder) {
-    if (!node["radius"] || !node["length"]) fail(where, "a cylinder needs 'radius' and 'length' [m]");
+    if (!node["radius"] || !node["length"])
+      fail(where, "a cylinder needs 'radius' and 'length' [m]");
     part->radius = readNumber(node, "radius", where, 0.0);
     part->length = readNumber(node, "length", where, 0.0);
   } else {
@@ -90,9 +90,9 @@ BrickShape readShape(const YAML::Node& node, const std::string& where) {
 
 BrickType readSceneType(const std::string& name, const YAML::Node& node) {
   const std::string where = "types." + name;
-  requireKnownKeys(node, where,
-                   withKeys(kGeometryKeys, {"parts", "mass", "friction", "restitution",
-                                            "rolling_friction"}));
+  requireKnownKeys(
+      node, where,
+      withKeys(kGeometryKeys, {"parts", "mass", "friction", "restitution", "rolling_friction"}));
   if (!node["mass"]) fail(where, "needs 'mass' [kg]");
   BrickType type;
   type.name = name;

@@ -7,8 +7,8 @@
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/geometry/polygon2d.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/stability_options.h"
 #include "physics/contact.h"
 
@@ -108,7 +108,7 @@ struct RestingPlacement {
 /// request between steps (a placement, a removal, a push). Everything goes
 /// through StabilityModel::decide, so a model has one place where it reacts.
 struct StabilityInput {
-  double dt = 0.0;                 ///< Sim time since the last step [s]; 0 between steps.
+  double dt = 0.0;  ///< Sim time since the last step [s]; 0 between steps.
   /// The world's gravity [m/s^2]: contact impulses become loads in the g
   /// statics weighs bricks in.
   double gravity = 9.81;
@@ -121,7 +121,7 @@ struct StabilityInput {
   /// as a whole once the last is in, not half-built (an arch's half-ring
   /// cannot stand alone).
   bool more_to_come = false;
-  std::vector<BodyHandle> removed;       ///< Bricks that left the world.
+  std::vector<BodyHandle> removed;  ///< Bricks that left the world.
   /// Bricks taken into a hand (grasped): out of the stack, still in the world.
   std::vector<BodyHandle> grasped;
   std::vector<BodyHandle> pushed;  ///< Bricks pushed from outside.

@@ -87,9 +87,9 @@ ShapeMass combine(const std::vector<PartBuild>& parts) {
   for (const PartBuild& p : parts) {
     const Eigen::Matrix3d r = p.part.pose.linear();
     const Eigen::Vector3d d = p.part.pose * p.mass.centroid - total.centroid;
-    unit_density += p.mass.volume * (r * p.mass.inertia * r.transpose() +
-                                     (d.squaredNorm() * Eigen::Matrix3d::Identity() -
-                                      d * d.transpose()));
+    unit_density +=
+        p.mass.volume * (r * p.mass.inertia * r.transpose() +
+                         (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
   }
   total.inertia = unit_density / total.volume;
   return total;
@@ -170,7 +170,7 @@ Status buildShape(const BrickShape& shape, ConvexSolid* solid, ShapeMass* mass) 
   ConvexSolid result;
   for (const PartBuild& p : parts) result.parts.push_back(p.part);
   *mass = parts.size() == 1 && shape.parts[0].pose.matrix().isIdentity(0.0) ? parts[0].mass
-                                                                          : combine(parts);
+                                                                            : combine(parts);
   *solid = std::move(result);
   return Status::success();
 }

@@ -52,7 +52,8 @@ Eigen::Isometry3d toIsometry(const urdf::Pose& pose) {
 std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> geometriesOf(const urdf::Link& link) {
   std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> result;
   for (const urdf::CollisionSharedPtr& collision : link.collision_array)
-    if (collision && collision->geometry) result.emplace_back(collision->geometry, collision->origin);
+    if (collision && collision->geometry)
+      result.emplace_back(collision->geometry, collision->origin);
   if (!result.empty()) return result;
   for (const urdf::VisualSharedPtr& visual : link.visual_array)
     if (visual && visual->geometry) result.emplace_back(visual->geometry, visual->origin);
@@ -114,7 +115,8 @@ Status massOfLink(const urdf::Link& link, BrickType* type, bool* inertia_given) 
   tensor << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
   *inertia_given = !tensor.isZero(0.0);
   if (!*inertia_given) return Status::success();
-  if (Status frame = inertialFrame(toIsometry(in.origin), tensor, &type->inertia, &type->mass_frame);
+  if (Status frame =
+          inertialFrame(toIsometry(in.origin), tensor, &type->inertia, &type->mass_frame);
       !frame)
     return Status::error("link '" + link.name + "': " + frame.message);
   return Status::success();
@@ -196,8 +198,8 @@ Status BrickTypeLibrary::parse(const std::string& urdf_xml, const std::string& m
   BrickType defaults;
   std::string default_type;
   const ParameterValue* own_materials = nullptr;
-  if (Status read = readMaterials(materials_yaml, &defaults, &default_type, &materials,
-                                  &own_materials);
+  if (Status read =
+          readMaterials(materials_yaml, &defaults, &default_type, &materials, &own_materials);
       !read)
     return read;
 

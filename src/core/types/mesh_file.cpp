@@ -4,9 +4,9 @@
 #include <fstream>
 #include <sstream>
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 namespace brick_stack_sim {
 

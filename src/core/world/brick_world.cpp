@@ -50,9 +50,9 @@ void prepareFrozenColliders(WorldState* w) {
   // does not help against a body that is not in Bullet's world.
   double fastest = 0.0;
   for (const BrickRecord* mover : w->sets.movers()) {
-    fastest = std::max(fastest,
-                       w->scene.linearSpeed(mover->handle) +
-                           w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass());
+    fastest = std::max(
+        fastest, w->scene.linearSpeed(mover->handle) +
+                     w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass());
   }
   const double dt = w->options.time_step;
   const double travel = (2.0 * fastest + w->options.gravity * dt) * dt + kColliderMargin;

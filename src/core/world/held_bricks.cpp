@@ -98,8 +98,8 @@ void pressOn(const WorldState& w, const BrickRecord& held, const Eigen::Isometry
   const double force = std::min(hand.stiffness * beyond, hand.max_force);
   if (!(force > kLeastPress)) return;
   std::vector<PairContact> touching;
-  appendContacts(w, held.handle, held.type.friction, held.type.placed(pose),
-                 stop.brick, true, &touching);
+  appendContacts(w, held.handle, held.type.friction, held.type.placed(pose), stop.brick, true,
+                 &touching);
   std::vector<Eigen::Vector3d> points;
   for (const PairContact& contact : touching)
     points.insert(points.end(), contact.points.begin(), contact.points.end());

@@ -219,8 +219,9 @@ void strikeFrozenBricks(WorldState* w, const std::vector<ColliderApproach>& near
       continue;
     // A brick slower than the impact speed everywhere cannot strike: most
     // movers near frozen bricks are settling on them.
-    const double fastest = w->scene.linearSpeed(mover->handle) +
-                           w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass();
+    const double fastest =
+        w->scene.linearSpeed(mover->handle) +
+        w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass();
     if (fastest <= w->options.stability.impact_speed) continue;
     const double dt = w->options.time_step;
     Striker striker{mover->handle,
@@ -238,7 +239,8 @@ void strikeFrozenBricks(WorldState* w, const std::vector<ColliderApproach>& near
     striker.pose.translation() += striker.velocity * dt;
     // A fast striker is judged where it first meets the brick, not beyond it.
     const Eigen::Isometry3d from = w->scene.pose(mover->handle);
-    striker.pose = partWay(from, striker.pose, firstContactOnTheWay(*w, striker, from, pair.frozen));
+    striker.pose =
+        partWay(from, striker.pose, firstContactOnTheWay(*w, striker, from, pair.frozen));
     Impact impact;
     if (findImpact(*w, striker, pair.frozen, &impact)) impacts.push_back(impact);
   }

@@ -119,8 +119,8 @@ void appendContacts(const WorldState& w, BodyHandle brick, double friction, cons
   contact.b = other;
   // Bullet's combination (bullet_scene.cpp): the geometric mean.
   contact.friction = std::sqrt(w.frictionOf(other) * friction);
-  if (flushContactPatch(other_box, box, w.options.stability.flush_angle, touching,
-                        &contact.points, &contact.normal)) {
+  if (flushContactPatch(other_box, box, w.options.stability.flush_angle, touching, &contact.points,
+                        &contact.normal)) {
     contacts->push_back(std::move(contact));
     return;
   }

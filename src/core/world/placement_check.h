@@ -2,10 +2,10 @@
 
 #include <vector>
 
-#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/geometry/convex_solid.h"
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/brick_type.h"
 #include "physics/contact.h"
 
 namespace brick_stack_sim {

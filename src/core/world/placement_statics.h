@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/geometry/convex_solid.h"
+#include "brick_stack_sim/core/types/brick.h"
 #include "physics/contact.h"
 
 namespace brick_stack_sim {

@@ -68,15 +68,14 @@ TEST(SceneShapes, BadGeometryIsRefusedWithTheTypesPlace) {
            {"{shape: convex, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, .nan], [1, 1, 1]], mass: 0.1}",
             "finite"},
            {"{shape: compound, parts: [], mass: 0.1}", "parts"},
-           {"{shape: compound, parts: [{shape: box, size: [0.1, 0.1, 0]}], mass: 0.1}",
-            "parts[0]"},
+           {"{shape: compound, parts: [{shape: box, size: [0.1, 0.1, 0]}], mass: 0.1}", "parts[0]"},
            {"{shape: compound, parts: [{shape: compound}], mass: 0.1}", "compound"},
            {"{shape: cylinder, radius: 0.02, length: 0.1}", "mass"},
            {"{shape: cylinder, radius: 0.02, length: 0.1, size: [1, 1, 1], mass: 0.1, colour: red}",
             "colour"}}) {
     Scene scene;
-    const Status s =
-        parseScene("types:\n  odd: " + entry + "\nbricks: []\n", "bad", test::packageTypes(), &scene);
+    const Status s = parseScene("types:\n  odd: " + entry + "\nbricks: []\n", "bad",
+                                test::packageTypes(), &scene);
     EXPECT_FALSE(s.ok) << entry;
     EXPECT_NE(s.message.find("types.odd"), std::string::npos) << s.message;
     EXPECT_NE(s.message.find(reason), std::string::npos) << entry << ": " << s.message;

@@ -69,7 +69,9 @@ bool thrustLineFits(int n, double thickness, double* worst_slide) {
   if (n % 2 == 1) {
     const double low = (n / 2) * step, half = step / 2;
     parts.push_back({low,
-                     {onRing(inner, low), {0, inner * std::cos(half)}, {0, outer * std::cos(half)},
+                     {onRing(inner, low),
+                      {0, inner * std::cos(half)},
+                      {0, outer * std::cos(half)},
                       onRing(outer, low)}});
   } else {
     // A joint at the crown: the thrust passes within it, inner <= y0 <= outer.
@@ -78,8 +80,8 @@ bool thrustLineFits(int n, double thickness, double* worst_slide) {
   }
   for (int j = n / 2 - 1; j >= 0; --j) {
     const double low = j * step, high = (j + 1) * step;
-    parts.push_back({low, {onRing(inner, low), onRing(inner, high), onRing(outer, high),
-                           onRing(outer, low)}});
+    parts.push_back(
+        {low, {onRing(inner, low), onRing(inner, high), onRing(outer, high), onRing(outer, low)}});
   }
   std::vector<std::pair<double, double>> joints;  // (W, M) above each joint, for sliding
   for (const auto& [theta, block] : parts) {
@@ -171,7 +173,8 @@ bool archStands(const std::string& mode, int n, double ratio) {
   auto world = archWorld(mode, n, ratio, &bricks);
   std::vector<BrickPlacement> placements;
   for (const ScheduledBrick& brick : bricks) placements.push_back(brick.placement);
-  for (const Status& placed : world->addBricks(placements)) EXPECT_TRUE(placed.ok) << placed.message;
+  for (const Status& placed : world->addBricks(placements))
+    EXPECT_TRUE(placed.ok) << placed.message;
   return standing(world.get()) == n;
 }
 
@@ -193,8 +196,8 @@ TEST_P(ArchInMode, StandsAboveTheThrustLinesLeastThicknessAndFallsBelowIt) {
     // Straight joints at finitely many places need less than the continuous ring.
     EXPECT_LT(statics, kClassicalLeast);
     EXPECT_GT(statics, 0.8 * kClassicalLeast);
-    const double found = leastThicknessSimulated(GetParam(), n, 0.5 * kClassicalLeast,
-                                                 1.5 * kClassicalLeast);
+    const double found =
+        leastThicknessSimulated(GetParam(), n, 0.5 * kClassicalLeast, 1.5 * kClassicalLeast);
     RecordProperty("least_t_over_R_n" + std::to_string(n), std::to_string(found));
     std::printf("%s n=%d: least t/R simulated %.4f, thrust line %.4f, classical %.4f\n",
                 GetParam().c_str(), n, found, statics, kClassicalLeast);
@@ -204,8 +207,9 @@ TEST_P(ArchInMode, StandsAboveTheThrustLinesLeastThicknessAndFallsBelowIt) {
 
 /// How many of an arch's voussoirs stand, placed by `place` (`last`: the
 /// last of them).
-int standingVoussoirs(const std::string& mode, int n,
-                      const std::function<void(BrickWorld*, const BrickPlacement&, bool last)>& place) {
+int standingVoussoirs(
+    const std::string& mode, int n,
+    const std::function<void(BrickWorld*, const BrickPlacement&, bool last)>& place) {
   std::vector<ScheduledBrick> bricks;
   auto world = archWorld(mode, n, 0.15, &bricks);  // well above the least thickness
   for (std::size_t i = 0; i < bricks.size(); ++i)

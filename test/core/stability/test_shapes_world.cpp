@@ -47,7 +47,8 @@ BrickType roofType(double base, double height, double depth, double mass) {
   return type;
 }
 
-std::unique_ptr<BrickWorld> worldWith(const std::string& mode, const std::vector<BrickType>& extra) {
+std::unique_ptr<BrickWorld> worldWith(const std::string& mode,
+                                      const std::vector<BrickType>& extra) {
   BrickTypeLibrary types = test::packageTypes();
   for (const BrickType& type : extra) EXPECT_TRUE(types.add(type).ok) << type.name;
   std::unique_ptr<BrickWorld> world;
@@ -112,8 +113,9 @@ TEST_P(ShapesInMode, ARoofAcrossTwoPlanksStandsAndFallsBeyondItsBalancePoint) {
     SCOPED_TRACE("roof centroid at x = " + std::to_string(s));
     auto world = worldWith(GetParam(), {roofType(0.12, 0.03, 0.03, 0.03)});
     for (double x : {-0.04, 0.04})
-      ASSERT_TRUE(world->addBrick(at(x < 0 ? "left" : "right", "kapla",
-                                     Eigen::Vector3d(x, 0, top / 2), standing()))
+      ASSERT_TRUE(world
+                      ->addBrick(at(x < 0 ? "left" : "right", "kapla",
+                                    Eigen::Vector3d(x, 0, top / 2), standing()))
                       .ok);
     ASSERT_TRUE(world->addBrick(at("roof", "roof", Eigen::Vector3d(s, 0, top))).ok);
     const bool stands = s < 0.0439;
@@ -133,7 +135,8 @@ TEST_P(ShapesInMode, ARoofAcrossTwoPlanksStandsAndFallsBeyondItsBalancePoint) {
 TEST_P(ShapesInMode, APlankOffCentreOnALyingCylinderTips) {
   const double r = 0.02;
   auto world = worldWith(GetParam(), {cylinderType("log", r, 0.06, 0.1, 0.01)});
-  const Eigen::Matrix3d lying = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d lying =
+      Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   ASSERT_TRUE(world->addBrick(at("log", "log", Eigen::Vector3d(0, 0, r), lying)).ok);
   ASSERT_TRUE(
       world->addBrick(at("plank", "kapla", Eigen::Vector3d(0.03, 0, 2 * r + kKaplaThickness / 2)))
@@ -163,14 +166,15 @@ TEST_P(RollingInMode, ALyingCylinderRollsWhenPushedAndStopsByRollingFriction) {
   const double own_rolling = 0.002, c = own_rolling * table_friction;
   const double mu = 0.5;  // pine on the table: both 0.5, combined by their geometric mean
   const double sliding = (v0 * v0 - (2 * v0 / 3) * (2 * v0 / 3)) / (2 * mu * g);  // 2.3 mm
-  const double expected = sliding + v0 * v0 * r / (3 * c * g);                   // 29.5 mm
-  const Eigen::Matrix3d lying = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const double expected = sliding + v0 * v0 * r / (3 * c * g);                    // 29.5 mm
+  const Eigen::Matrix3d lying =
+      Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   for (double rolling : {own_rolling, 0.0}) {
     SCOPED_TRACE("rolling friction " + std::to_string(rolling));
     auto world = worldWith(GetParam(), {cylinderType("log", r, 0.06, m, rolling)});
     ASSERT_TRUE(world->addBrick(at("log", "log", Eigen::Vector3d(0, 0, r), lying)).ok);
-    ASSERT_TRUE(world->applyImpulse("log", Eigen::Vector3d(m * v0, 0, 0),
-                                    Eigen::Vector3d(0, 0, r)).ok);
+    ASSERT_TRUE(
+        world->applyImpulse("log", Eigen::Vector3d(m * v0, 0, 0), Eigen::Vector3d(0, 0, r)).ok);
     test::runFor(world.get(), 0.1);
     // Rolling, not sliding: the spin about the axis matches v / r.
     const BrickSnapshot early = brick(*world, "log");

@@ -79,7 +79,7 @@ void expectWedge(const BrickType& wedge, double m) {
   EXPECT_NEAR((wedge.size - Eigen::Vector3d(a, d, h)).norm(), 0.0, 1e-8);
   Eigen::Matrix3d expected;
   expected << m * (d * d / 12 + h * h / 18), 0, m * a * h / 36,  //
-      0, m * (a * a + h * h) / 18, 0,                             //
+      0, m * (a * a + h * h) / 18, 0,                            //
       m * a * h / 36, 0, m * (d * d / 12 + a * a / 18);
   EXPECT_NEAR((tensorOf(wedge) - expected).norm(), 0.0, 1e-6 * expected.norm())
       << tensorOf(wedge) << "\nexpected\n"
@@ -91,18 +91,19 @@ TEST(BrickShapes, UrdfMeshIsReadAsItsHullWithTheWedgesCentroidAndInertia) {
   for (const char* file : {"wedge.stl", "wedge.obj"}) {
     const std::string scale = std::string(file) == "wedge.stl" ? "0.001 0.001 0.001" : "1 1 1";
     BrickTypeLibrary types;
-    const BrickType& wedge = loaded(
-        robot(link("wedge", massOnly(0.05),
-                   "<collision><geometry><mesh filename=\"" + std::string(file) + "\" scale=\"" +
-                       scale + "\"/></geometry></collision>")),
-        &types, "wedge");
+    const BrickType& wedge =
+        loaded(robot(link("wedge", massOnly(0.05),
+                          "<collision><geometry><mesh filename=\"" + std::string(file) +
+                              "\" scale=\"" + scale + "\"/></geometry></collision>")),
+               &types, "wedge");
     SCOPED_TRACE(file);
     expectWedge(wedge, 0.05);
   }
 }
 
 TEST(BrickShapes, UrdfMeshIsFoundInItsPackage) {
-  const std::string previous = std::getenv("ROS_PACKAGE_PATH") ? std::getenv("ROS_PACKAGE_PATH") : "";
+  const std::string previous =
+      std::getenv("ROS_PACKAGE_PATH") ? std::getenv("ROS_PACKAGE_PATH") : "";
   setenv("ROS_PACKAGE_PATH", BRICK_STACK_SIM_SOURCE_DIR, 1);
   BrickTypeLibrary types;
   const Status s = BrickTypeLibrary::parse(
@@ -123,20 +124,22 @@ TEST(BrickShapes, UrdfMeshIsFoundInItsPackage) {
 // from the centroid (parallel axes).
 TEST(BrickShapes, UrdfLinkWithTwoCollisionsIsACompound) {
   BrickTypeLibrary types;
-  const BrickType& l_block = loaded(
-      robot(link("l_block", massOnly(0.04),
-                 "<collision><geometry><box size=\"0.06 0.02 0.02\"/></geometry></collision>"
-                 "<collision><origin xyz=\"0.02 0 0.03\"/><geometry><box size=\"0.02 0.02 "
-                 "0.04\"/></geometry></collision>")),
-      &types, "l_block");
+  const BrickType& l_block =
+      loaded(robot(link("l_block", massOnly(0.04),
+                        "<collision><geometry><box size=\"0.06 0.02 0.02\"/></geometry></collision>"
+                        "<collision><origin xyz=\"0.02 0 0.03\"/><geometry><box size=\"0.02 0.02 "
+                        "0.04\"/></geometry></collision>")),
+             &types, "l_block");
   EXPECT_EQ(l_block.shape.kind, ShapeKind::kCompound);
   ASSERT_EQ(l_block.solid->parts.size(), 2u);
   EXPECT_NEAR((l_block.mass_frame.translation() - Eigen::Vector3d(0.008, 0, 0.012)).norm(), 0.0,
               1e-12);
   EXPECT_NEAR((l_block.size - Eigen::Vector3d(0.06, 0.02, 0.06)).norm(), 0.0, 1e-12);
   const double m_a = 0.024, m_b = 0.016;
-  const double own = m_a * (0.06 * 0.06 + 0.02 * 0.02) / 12 + m_b * (0.02 * 0.02 + 0.04 * 0.04) / 12;
-  const double shifted = m_a * (0.008 * 0.008 + 0.012 * 0.012) + m_b * (0.012 * 0.012 + 0.018 * 0.018);
+  const double own =
+      m_a * (0.06 * 0.06 + 0.02 * 0.02) / 12 + m_b * (0.02 * 0.02 + 0.04 * 0.04) / 12;
+  const double shifted =
+      m_a * (0.008 * 0.008 + 0.012 * 0.012) + m_b * (0.012 * 0.012 + 0.018 * 0.018);
   EXPECT_NEAR(tensorOf(l_block)(1, 1), own + shifted, 1e-12);
 }
 
@@ -156,17 +159,18 @@ TEST(BrickShapes, GivenInertiaAndItsOriginAreKept) {
 TEST(BrickShapes, BadGeometryIsRefusedNamingTheType) {
   const std::string cylinder_zero =
       "<collision><geometry><cylinder radius=\"0\" length=\"0.05\"/></geometry></collision>";
-  const std::string sphere = "<collision><geometry><sphere radius=\"0.02\"/></geometry></collision>";
+  const std::string sphere =
+      "<collision><geometry><sphere radius=\"0.02\"/></geometry></collision>";
   const std::string missing =
       "<collision><geometry><mesh filename=\"no_such.stl\"/></geometry></collision>";
   const std::string not_a_mesh =
       "<collision><geometry><mesh filename=\"../../core/types/test_brick_shapes.cpp\"/>"
       "</geometry></collision>";
-  for (const auto& [collision, reason] : std::vector<std::pair<std::string, std::string>>{
-           {cylinder_zero, "radius"},
-           {sphere, "sphere"},
-           {missing, "no_such.stl"},
-           {not_a_mesh, "does not load"}}) {
+  for (const auto& [collision, reason] :
+       std::vector<std::pair<std::string, std::string>>{{cylinder_zero, "radius"},
+                                                        {sphere, "sphere"},
+                                                        {missing, "no_such.stl"},
+                                                        {not_a_mesh, "does not load"}}) {
     BrickTypeLibrary types;
     const Status s = BrickTypeLibrary::parse(robot(link("odd", massOnly(0.1), collision)), "",
                                              &types, dataPath("test/fixtures/meshes"));

@@ -13,11 +13,11 @@
 namespace brick_stack_sim {
 namespace {
 
-constexpr double kInch = 0.0254;              ///< [m]
-constexpr double kUnit = 5.5 * kInch;         ///< [m]
-constexpr double kWidth = 2.75 * kInch;       ///< [m]
-constexpr double kThick = 1.375 * kInch;      ///< [m]
-constexpr double kMaple = 700.0;              ///< [kg/m^3]
+constexpr double kInch = 0.0254;          ///< [m]
+constexpr double kUnit = 5.5 * kInch;     ///< [m]
+constexpr double kWidth = 2.75 * kInch;   ///< [m]
+constexpr double kThick = 1.375 * kInch;  ///< [m]
+constexpr double kMaple = 700.0;          ///< [kg/m^3]
 /// The meshes are read as single-precision floats: sizes to a few parts in
 /// 10^8 of a metre [m].
 constexpr double kMeshTolerance = 1e-7;
@@ -53,22 +53,40 @@ std::vector<Expected> expectedUnitBlocks() {
   return {
       {"unit_block", ShapeKind::kBox, {kUnit, kWidth, kThick}, kUnit * kWidth * kThick, zero},
       {"unit_half", ShapeKind::kBox, {kWidth, kWidth, kThick}, kWidth * kWidth * kThick, zero},
-      {"unit_double", ShapeKind::kBox, {2 * kUnit, kWidth, kThick}, 2 * kUnit * kWidth * kThick,
+      {"unit_double",
+       ShapeKind::kBox,
+       {2 * kUnit, kWidth, kThick},
+       2 * kUnit * kWidth * kThick,
        zero},
-      {"unit_quadruple", ShapeKind::kBox, {4 * kUnit, kWidth, kThick},
-       4 * kUnit * kWidth * kThick, zero},
+      {"unit_quadruple",
+       ShapeKind::kBox,
+       {4 * kUnit, kWidth, kThick},
+       4 * kUnit * kWidth * kThick,
+       zero},
       {"unit_pillar", ShapeKind::kBox, {kUnit, kThick, kThick}, kUnit * kThick * kThick, zero},
-      {"unit_cylinder", ShapeKind::kCylinder, {kThick, kThick, kUnit},
-       M_PI * 0.25 * kThick * kThick * kUnit, zero},
-      {"unit_half_circle", ShapeKind::kConvex, {2 * kWidth, kWidth, kThick},
-       half_circle_area * kThick, {0, half_circle_y, 0}},
+      {"unit_cylinder",
+       ShapeKind::kCylinder,
+       {kThick, kThick, kUnit},
+       M_PI * 0.25 * kThick * kThick * kUnit,
+       zero},
+      {"unit_half_circle",
+       ShapeKind::kConvex,
+       {2 * kWidth, kWidth, kThick},
+       half_circle_area * kThick,
+       {0, half_circle_y, 0}},
       // A right triangle's centroid is a third of each leg from the right
       // angle, which is at (-W/2, -W/2): W/3 - W/2 = -W/6.
-      {"unit_triangle", ShapeKind::kConvex, {kWidth, kWidth, kThick},
-       0.5 * kWidth * kWidth * kThick, {-kWidth / 6, -kWidth / 6, 0}},
+      {"unit_triangle",
+       ShapeKind::kConvex,
+       {kWidth, kWidth, kThick},
+       0.5 * kWidth * kWidth * kThick,
+       {-kWidth / 6, -kWidth / 6, 0}},
       // The wedge's section is a right triangle with its right angle at
       // (+L/2, -T/2): a third of each leg in from there.
-      {"unit_ramp", ShapeKind::kConvex, {kUnit, kWidth, kThick}, 0.5 * kUnit * kThick * kWidth,
+      {"unit_ramp",
+       ShapeKind::kConvex,
+       {kUnit, kWidth, kThick},
+       0.5 * kUnit * kThick * kWidth,
        {kUnit / 2 - kUnit / 3, 0, -kThick / 2 + kThick / 3}},
       {"unit_arch", ShapeKind::kCompound, {4 * r, r, 2 * r}, arch_area * r, {0, 0, arch_z}},
   };

@@ -44,9 +44,11 @@ TEST_F(ShapedRequests, CylindersOverlapByTheirRoundSidesNotTheirBoundingBoxes) {
   // Two cans side by side 41 mm apart: their circles (radius 20 mm) miss by
   // 1 mm. At 39 mm they overlap by 1 mm and are refused.
   EXPECT_TRUE(world_->checkPlacement(canAt("near", Eigen::Vector3d(0.041, 0, kLength / 2))).ok);
-  const Status overlapping = world_->checkPlacement(canAt("in", Eigen::Vector3d(0.039, 0, kLength / 2)));
+  const Status overlapping =
+      world_->checkPlacement(canAt("in", Eigen::Vector3d(0.039, 0, kLength / 2)));
   EXPECT_FALSE(overlapping.ok);
-  EXPECT_NE(overlapping.message.find("overlaps brick 'base'"), std::string::npos) << overlapping.message;
+  EXPECT_NE(overlapping.message.find("overlaps brick 'base'"), std::string::npos)
+      << overlapping.message;
   // Diagonally at 30 mm along x and y their bounding squares overlap by 10 mm,
   // but the centres lie 42.4 mm apart: the circles do not touch.
   EXPECT_TRUE(world_->checkPlacement(canAt("corner", Eigen::Vector3d(0.03, 0.03, kLength / 2))).ok);
@@ -65,12 +67,14 @@ TEST_F(ShapedRequests, NoPointOfACylinderMayGoUnderTheTable) {
 
 TEST_F(ShapedRequests, APushActsOnTheCurvedSideAndNotBesideIt) {
   // On its side at 20 mm from the axis; 3 mm out is beyond the 1 mm allowed.
-  EXPECT_TRUE(world_->applyImpulse("base", Eigen::Vector3d(1e-4, 0, 0),
-                                   Eigen::Vector3d(-kRadius * std::cos(0.3),
-                                                   -kRadius * std::sin(0.3), kLength / 2))
+  EXPECT_TRUE(world_
+                  ->applyImpulse("base", Eigen::Vector3d(1e-4, 0, 0),
+                                 Eigen::Vector3d(-kRadius * std::cos(0.3), -kRadius * std::sin(0.3),
+                                                 kLength / 2))
                   .ok);
   const Status beside = world_->applyImpulse(
-      "base", Eigen::Vector3d(1e-4, 0, 0), Eigen::Vector3d(-0.023 * std::cos(0.3), -0.023 * std::sin(0.3), kLength / 2));
+      "base", Eigen::Vector3d(1e-4, 0, 0),
+      Eigen::Vector3d(-0.023 * std::cos(0.3), -0.023 * std::sin(0.3), kLength / 2));
   EXPECT_FALSE(beside.ok);
   EXPECT_NE(beside.message.find("outside brick"), std::string::npos) << beside.message;
 }
@@ -79,14 +83,17 @@ TEST_F(ShapedRequests, ACanOnACanStandsAndOneOverhangingItsRimDoesNot) {
   // A can on the base can's cap: centred it stands; shifted by 25 mm its
   // centre lies beyond the cap's rim (20 mm) and it would fall.
   PlacementReport report;
-  ASSERT_TRUE(world_->evaluatePlacement(canAt("top", Eigen::Vector3d(0, 0, 1.5 * kLength)), &report).ok);
+  ASSERT_TRUE(
+      world_->evaluatePlacement(canAt("top", Eigen::Vector3d(0, 0, 1.5 * kLength)), &report).ok);
   EXPECT_TRUE(report.stable) << report.reason;
   ASSERT_EQ(report.supported_by.size(), 1u);
   EXPECT_EQ(report.supported_by[0], "base");
   // The cap is a disc of 20 mm radius: the margin is its distance to the rim,
   // within the prism's facets' sag.
   EXPECT_NEAR(report.margin, kRadius, kCylinderFacetSag);
-  ASSERT_TRUE(world_->evaluatePlacement(canAt("off", Eigen::Vector3d(0.025, 0, 1.5 * kLength)), &report).ok);
+  ASSERT_TRUE(
+      world_->evaluatePlacement(canAt("off", Eigen::Vector3d(0.025, 0, 1.5 * kLength)), &report)
+          .ok);
   EXPECT_FALSE(report.stable);
 }
 

@@ -151,15 +151,15 @@ struct KaplaRecordParams {
 /// springing line. Pointed: each half an arc of `radius` about a centre
 /// `pointed` times `radius` beyond the middle, meeting at a joint on top.
 struct ArchParams {
-  int voussoirs = 15;        ///< Even when pointed.
-  double radius = 0.1;       ///< Of the centre line of the ring [m].
-  double thickness = 0.015;  ///< Of the ring, radially [m].
-  double depth = 0.03;       ///< Along y [m].
-  double pointed = 0.0;      ///< In [0, 0.9] [-].
-  double density = 700.0;    ///< [kg/m^3]; 700: maple, as toy blocks.
-  double friction = 0.8;     ///< Of the voussoirs' material [-].
-  std::string type_name = "voussoir";  ///< The type it defines.
-  double start = 0.0;                  ///< Every voussoir is placed at rest then [s].
+  int voussoirs = 15;                                ///< Even when pointed.
+  double radius = 0.1;                               ///< Of the centre line of the ring [m].
+  double thickness = 0.015;                          ///< Of the ring, radially [m].
+  double depth = 0.03;                               ///< Along y [m].
+  double pointed = 0.0;                              ///< In [0, 0.9] [-].
+  double density = 700.0;                            ///< [kg/m^3]; 700: maple, as toy blocks.
+  double friction = 0.8;                             ///< Of the voussoirs' material [-].
+  std::string type_name = "voussoir";                ///< The type it defines.
+  double start = 0.0;                                ///< Every voussoir is placed at rest then [s].
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< Middle of the springing line [m].
 };
 
@@ -169,8 +169,8 @@ struct ArchParams {
 struct ColumnParams {
   int count = 5;
   std::string type;
-  double start = 0.0;     ///< [s]
-  double interval = 0.0;  ///< [s]
+  double start = 0.0;                                ///< [s]
+  double interval = 0.0;                             ///< [s]
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< [m]
 };
 

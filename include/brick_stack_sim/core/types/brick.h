@@ -41,7 +41,7 @@ struct BrickSnapshot {
   /// Its type's solid in the brick's frame (shared, never changed): what
   /// markers draw. Null: a box of `size`.
   std::shared_ptr<const ConvexSolid> solid;
-  double mass = 0.0;                                           ///< [kg]
+  double mass = 0.0;  ///< [kg]
   BrickState state = BrickState::kDynamic;
   bool asleep = false;    ///< Bullet has deactivated it (mode none with sleeping).
   bool fell_off = false;  ///< It has dropped below the table top.

@@ -24,7 +24,7 @@ const char* toString(ShapeKind kind);
 
 /// One convex piece of a solid as described.
 struct ShapePart {
-  ShapeKind kind = ShapeKind::kBox;  ///< kBox, kCylinder or kConvex.
+  ShapeKind kind = ShapeKind::kBox;                ///< kBox, kCylinder or kConvex.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< Box: full extents [m].
   double radius = 0.0;                             ///< Cylinder [m].
   double length = 0.0;                             ///< Cylinder, along its z [m].
@@ -51,9 +51,9 @@ constexpr double kCylinderFacetSag = 2e-5;
 
 /// Mass properties of a shape at uniform density.
 struct ShapeMass {
-  double volume = 0.0;                                       ///< [m^3]
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();        ///< Type frame [m].
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();         ///< About the centroid, per kg [m^2].
+  double volume = 0.0;                                 ///< [m^3]
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< Type frame [m].
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();   ///< About the centroid, per kg [m^2].
 };
 
 /// Checks the shape's geometry (sizes positive and finite, a hull with

@@ -7,10 +7,10 @@
 
 #include <Eigen/Geometry>
 
+#include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/types/sim_event.h"
-#include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/types/world_options.h"
 
 namespace brick_stack_sim {

@@ -31,9 +31,12 @@ std::vector<Arc> arcsOf(const ArchParams& p) {
 }
 
 Status checkArch(const ArchParams& p) {
-  const auto positive = [](double v, double most) { return std::isfinite(v) && v > 0 && v <= most; };
+  const auto positive = [](double v, double most) {
+    return std::isfinite(v) && v > 0 && v <= most;
+  };
   if (p.voussoirs < 2 || p.voussoirs > 1000)
-    return Status::error("arch voussoirs = " + std::to_string(p.voussoirs) + ": must be in [2, 1000]");
+    return Status::error("arch voussoirs = " + std::to_string(p.voussoirs) +
+                         ": must be in [2, 1000]");
   if (!positive(p.radius, 10.0)) return Status::error("arch radius must be in (0, 10] m");
   if (!positive(p.thickness, 1.9 * p.radius))
     return Status::error("arch thickness must be in (0, 1.9 radius] m");
@@ -60,7 +63,8 @@ Status voussoirType(const ArchParams& p, double step, BrickType* type) {
   for (double r : {inner, outer})
     for (double side : {-0.5, 0.5})
       for (double y : {-0.5 * p.depth, 0.5 * p.depth})
-        part.vertices.emplace_back(r * std::cos(side * step) - p.radius, y, r * std::sin(side * step));
+        part.vertices.emplace_back(r * std::cos(side * step) - p.radius, y,
+                                   r * std::sin(side * step));
   type->name = p.type_name;
   type->shape.kind = ShapeKind::kConvex;
   type->shape.parts = {part};
@@ -85,10 +89,9 @@ Status generateArch(const ArchParams& params, std::vector<BrickType>* types,
     for (int i = 0; i < arc.count; ++i) {
       const double middle = arc.from + (i + 0.5) * arc.step;
       const Eigen::Vector3d centre(params.origin.x() + arc.centre_x, params.origin.y(), 0.0);
-      ScheduledBrick& brick =
-          appendBrick(type, centre + params.radius * Eigen::Vector3d(std::cos(middle), 0.0,
-                                                                     std::sin(middle)),
-                      params.start, bricks);
+      ScheduledBrick& brick = appendBrick(
+          type, centre + params.radius * Eigen::Vector3d(std::cos(middle), 0.0, std::sin(middle)),
+          params.start, bricks);
       // x out along the middle radius, z along the ring: turned by -middle about y.
       brick.placement.pose.linear() =
           Eigen::AngleAxisd(-middle, Eigen::Vector3d::UnitY()).toRotationMatrix();
