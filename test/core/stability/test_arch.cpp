@@ -242,6 +242,43 @@ TEST_P(ArchInMode, AHalfRingFallsAndARingPlacedAtOneInstantStands) {
             31);
 }
 
+// A pointed arch (each half an arc about a centre 0.3 R beyond the middle)
+// carries its crown more steeply than a semicircle: a ring 0.15 R thick,
+// well above a semicircle's least, stands too. It needs a joint at the crown.
+TEST_P(ArchInMode, APointedArchStands) {
+  ArchParams params;
+  params.voussoirs = 16;
+  params.radius = kRadius;
+  params.thickness = 0.15 * kRadius;
+  params.pointed = 0.3;
+  params.friction = kFriction;
+  std::vector<BrickType> types;
+  std::vector<ScheduledBrick> bricks;
+  ASSERT_TRUE(generateArch(params, &types, &bricks).ok);
+  // The crown: the top joint lies on the middle, at R sin(acos 0.3) high.
+  double top = 0.0;
+  for (const ScheduledBrick& brick : bricks)
+    top = std::max(top, brick.placement.pose.translation().z());
+  EXPECT_LT(top, kRadius * std::sin(std::acos(0.3)));
+  BrickTypeLibrary library = test::packageTypes();
+  for (const BrickType& type : types) ASSERT_TRUE(library.add(type).ok) << type.name;
+  EXPECT_EQ(types.size(), 2u);  // the voussoir and the crown voussoir
+  WorldOptions options = test::optionsFor(GetParam());
+  options.table.friction = kFriction;
+  std::unique_ptr<BrickWorld> world;
+  ASSERT_TRUE(BrickWorld::create(options, library, &world).ok);
+  std::vector<BrickPlacement> placements;
+  for (const ScheduledBrick& brick : bricks) placements.push_back(brick.placement);
+  for (const Status& placed : world->addBricks(placements))
+    EXPECT_TRUE(placed.ok) << placed.message;
+  EXPECT_EQ(standing(world.get()), 16);
+  params.voussoirs = 15;
+  std::vector<ScheduledBrick> odd;
+  const Status refused = generateArch(params, &types, &odd);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.message.find("even"), std::string::npos) << refused.message;
+}
+
 INSTANTIATE_TEST_SUITE_P(StaticsModes, ArchInMode, ::testing::Values("com", "equilibrium"));
 
 }  // namespace

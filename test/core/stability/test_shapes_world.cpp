@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
 #include "support/modes.h"
@@ -146,6 +147,30 @@ TEST_P(ShapesInMode, APlankOffCentreOnALyingCylinderTips) {
   // Tipped: its long axis turned well away from level, its far end down.
   const Eigen::Vector3d axis = brick(*world, "plank").pose.linear().col(0);
   EXPECT_GT(std::abs(axis.z()), 0.2);
+}
+
+// A column of five drums, each standing on the cap of the one below: every
+// cap carries the column above, its weight on the axis. It stands, each
+// drum a length above the last.
+TEST_P(ShapesInMode, AColumnOfCylindersStands) {
+  const double length = 0.06;
+  auto world = worldWith(GetParam(), {cylinderType("drum", 0.02, length, 0.05, 0.0)});
+  ColumnParams params;
+  params.count = 5;
+  params.type = "drum";
+  params.origin = Eigen::Vector2d(0.1, -0.1);
+  std::vector<ScheduledBrick> bricks;
+  ASSERT_TRUE(generateColumn(params, world->types(), &bricks).ok);
+  ASSERT_EQ(bricks.size(), 5u);
+  for (std::size_t i = 0; i < bricks.size(); ++i) {
+    EXPECT_NEAR(bricks[i].placement.pose.translation().z(), (i + 0.5) * length, 1e-12);
+    ASSERT_TRUE(world->addBrick(bricks[i].placement).ok);
+  }
+  test::runFor(world.get(), 1.0);
+  for (const BrickSnapshot& b : world->snapshot()) {
+    EXPECT_EQ(b.state, BrickState::kStable) << b.id;
+    EXPECT_LT((b.pose.translation() - b.placed_pose.translation()).norm(), 1e-6) << b.id;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ShapesInMode, ::testing::ValuesIn(test::modelModes()),

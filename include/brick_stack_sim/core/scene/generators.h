@@ -149,7 +149,8 @@ struct KaplaRecordParams {
 /// joints (its intrados and extrados are chords), of a type the generator
 /// defines. Semicircular (`pointed` = 0): one arc about the middle of the
 /// springing line. Pointed: each half an arc of `radius` about a centre
-/// `pointed` times `radius` beyond the middle, meeting at a joint on top.
+/// `pointed` times `radius` beyond the middle, the two top voussoirs (a
+/// type of their own, `type_name`_crown) meeting on a vertical joint.
 struct ArchParams {
   int voussoirs = 15;                                ///< Even when pointed.
   double radius = 0.1;                               ///< Of the centre line of the ring [m].

@@ -11,25 +11,6 @@ using scene_yaml::readString;
 
 namespace {
 
-/// One arc of the ring: its centre on the springing line and the angles
-/// its voussoirs span [rad], from `from` in steps of `step`.
-struct Arc {
-  double centre_x = 0.0;  ///< [m]
-  double from = 0.0;
-  double step = 0.0;
-  int count = 0;
-};
-
-std::vector<Arc> arcsOf(const ArchParams& p) {
-  if (p.pointed == 0.0) return {Arc{0.0, 0.0, M_PI / p.voussoirs, p.voussoirs}};
-  // Each half rises from its springing (angle 0 about a centre beyond the
-  // middle) to the crown, where the arc crosses the middle: cos = c / R.
-  const double crown = std::acos(p.pointed);
-  const int half = p.voussoirs / 2;
-  const double c = p.pointed * p.radius;
-  return {Arc{-c, 0.0, crown / half, half}, Arc{c, M_PI - crown, crown / half, half}};
-}
-
 Status checkArch(const ArchParams& p) {
   const auto positive = [](double v, double most) {
     return std::isfinite(v) && v > 0 && v <= most;
@@ -53,25 +34,104 @@ Status checkArch(const ArchParams& p) {
   return Status::success();
 }
 
-/// The voussoir spanning `step` [rad] of a ring of centre-line `radius`:
-/// its frame's origin on the centre line, x outward along the middle
-/// radius, z along the ring, y across it.
-Status voussoirType(const ArchParams& p, double step, BrickType* type) {
-  const double inner = p.radius - 0.5 * p.thickness, outer = p.radius + 0.5 * p.thickness;
+/// A point of the arch's plane [m]: x along the springing line from its
+/// middle, z up.
+using ArchPoint = Eigen::Vector2d;
+
+ArchPoint onRing(double centre_x, double r, double angle) {
+  return ArchPoint(centre_x + r * std::cos(angle), r * std::sin(angle));
+}
+
+/// The frame of a voussoir whose middle radius, about a centre `centre_x`
+/// on the springing line, is at `middle` [rad]: its origin on the ring's
+/// centre line, x out along that radius, z along the ring, y across it.
+Eigen::Isometry3d voussoirFrame(const ArchParams& p, double centre_x, double middle) {
+  Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+  const ArchPoint at = onRing(centre_x, p.radius, middle);
+  frame.translation() = Eigen::Vector3d(at.x(), 0.0, at.y());
+  frame.linear() = Eigen::AngleAxisd(-middle, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  return frame;
+}
+
+/// The voussoir type `name` whose cross-section has `corners` (in order
+/// around it), extruded over the depth, in `frame`.
+Status voussoirType(const ArchParams& p, const std::string& name,
+                    const std::vector<ArchPoint>& corners, const Eigen::Isometry3d& frame,
+                    BrickType* type) {
   ShapePart part;
   part.kind = ShapeKind::kConvex;
-  for (double r : {inner, outer})
-    for (double side : {-0.5, 0.5})
-      for (double y : {-0.5 * p.depth, 0.5 * p.depth})
-        part.vertices.emplace_back(r * std::cos(side * step) - p.radius, y,
-                                   r * std::sin(side * step));
-  type->name = p.type_name;
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const ArchPoint& a = corners[i];
+    const ArchPoint& b = corners[(i + 1) % corners.size()];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+    for (double y : {-0.5 * p.depth, 0.5 * p.depth})
+      part.vertices.push_back(frame.inverse() * Eigen::Vector3d(a.x(), y, a.y()));
+  }
+  type->name = name;
   type->shape.kind = ShapeKind::kConvex;
   type->shape.parts = {part};
-  // The cross-section is the ring's sector less its inner one, cut by chords.
-  type->mass = p.density * p.depth * 0.5 * (outer * outer - inner * inner) * std::sin(step);
+  type->mass = p.density * p.depth * 0.5 * std::abs(twice_area);
   type->friction = p.friction;
-  return finishBrickType(type, false);
+  if (Status built = finishBrickType(type, false); !built)
+    return Status::error("arch: " + built.message);
+  return Status::success();
+}
+
+/// The corners of the ring between the radii at `from` and `to` [rad]
+/// about a centre `centre_x`: its joints are radial, its faces chords.
+std::vector<ArchPoint> ringSection(const ArchParams& p, double centre_x, double from, double to) {
+  const double inner = p.radius - 0.5 * p.thickness, outer = p.radius + 0.5 * p.thickness;
+  return {onRing(centre_x, inner, from), onRing(centre_x, inner, to), onRing(centre_x, outer, to),
+          onRing(centre_x, outer, from)};
+}
+
+/// Places the ring's voussoirs from the right springing up: a semicircle
+/// in one arc over to the left springing; a pointed arch's right half,
+/// whose top voussoir meets the left half on the vertical crown joint, and
+/// the left half as its mirror image (a voussoir turned half a turn about
+/// the vertical is its mirror: it is the same across its depth).
+Status placeRing(const ArchParams& p, std::vector<BrickType>* types,
+                 std::vector<ScheduledBrick>* bricks) {
+  const bool pointed = p.pointed > 0.0;
+  const int count = pointed ? p.voussoirs / 2 : p.voussoirs;
+  const double c = pointed ? -p.pointed * p.radius : 0.0;  // the right half's centre
+  // A pointed half rises to where its arc crosses the middle: cos = c / R.
+  const double top = pointed ? std::acos(p.pointed) : M_PI;
+  const double step = top / count;
+  BrickType regular, crown;
+  if (Status built = voussoirType(p, p.type_name, ringSection(p, c, -0.5 * step, 0.5 * step),
+                                  voussoirFrame(p, c, 0.0), &regular);
+      !built)
+    return built;
+  const Eigen::Isometry3d crown_frame = voussoirFrame(p, c, top - 0.5 * step);
+  if (pointed) {
+    const double inner = p.radius - 0.5 * p.thickness, outer = p.radius + 0.5 * p.thickness;
+    std::vector<ArchPoint> section = ringSection(p, c, top - step, top);
+    section[1] = ArchPoint(0.0, std::sqrt(inner * inner - c * c));
+    section[2] = ArchPoint(0.0, std::sqrt(outer * outer - c * c));
+    if (Status built = voussoirType(p, p.type_name + "_crown", section, crown_frame, &crown);
+        !built)
+      return built;
+  }
+  const Eigen::Vector3d origin(p.origin.x(), p.origin.y(), 0.0);
+  std::vector<std::pair<const BrickType*, Eigen::Isometry3d>> half;
+  for (int i = 0; i < count; ++i) {
+    const bool is_crown = pointed && i + 1 == count;
+    half.emplace_back(is_crown ? &crown : &regular,
+                      is_crown ? crown_frame : voussoirFrame(p, c, (i + 0.5) * step));
+  }
+  for (int side = 0; side < (pointed ? 2 : 1); ++side) {
+    const Eigen::Isometry3d mirror(Eigen::AngleAxisd(side * M_PI, Eigen::Vector3d::UnitZ()));
+    for (const auto& [type, frame] : half) {
+      const Eigen::Isometry3d pose = Eigen::Translation3d(origin) * mirror * frame;
+      ScheduledBrick& brick = appendBrick(*type, pose.translation(), p.start, bricks);
+      brick.placement.pose.linear() = pose.linear();
+    }
+  }
+  types->push_back(std::move(regular));
+  if (pointed) types->push_back(std::move(crown));
+  return Status::success();
 }
 
 }  // namespace
@@ -81,24 +141,7 @@ std::int64_t brickCount(const ArchParams& params) { return clampedCount(params.v
 Status generateArch(const ArchParams& params, std::vector<BrickType>* types,
                     std::vector<ScheduledBrick>* bricks) {
   if (Status valid = checkArch(params); !valid) return valid;
-  const std::vector<Arc> arcs = arcsOf(params);
-  BrickType type;
-  if (Status built = voussoirType(params, arcs[0].step, &type); !built)
-    return Status::error("arch: " + built.message);
-  for (const Arc& arc : arcs) {
-    for (int i = 0; i < arc.count; ++i) {
-      const double middle = arc.from + (i + 0.5) * arc.step;
-      const Eigen::Vector3d centre(params.origin.x() + arc.centre_x, params.origin.y(), 0.0);
-      ScheduledBrick& brick = appendBrick(
-          type, centre + params.radius * Eigen::Vector3d(std::cos(middle), 0.0, std::sin(middle)),
-          params.start, bricks);
-      // x out along the middle radius, z along the ring: turned by -middle about y.
-      brick.placement.pose.linear() =
-          Eigen::AngleAxisd(-middle, Eigen::Vector3d::UnitY()).toRotationMatrix();
-    }
-  }
-  types->push_back(std::move(type));
-  return Status::success();
+  return placeRing(params, types, bricks);
 }
 
 namespace {
@@ -129,9 +172,10 @@ ArchParams readArchParams(const YAML::Node& node, const std::string& where) {
 void readArchGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks) {
   const ArchParams params = readArchParams(node, where);
-  if (context.types.find(params.type_name))
-    scene_yaml::fail(where + ".type_name", "type " + quotedId(params.type_name) +
-                                               " is already defined: give the arch another");
+  for (const std::string& name : {params.type_name, params.type_name + "_crown"})
+    if (context.types.find(name))
+      scene_yaml::fail(where + ".type_name",
+                       "type " + quotedId(name) + " is already defined: give the arch another");
   failUnless(generateArch(params, context.new_types, bricks), where);
 }
 
