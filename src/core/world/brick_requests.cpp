@@ -48,7 +48,11 @@ std::vector<Status> BrickWorld::addBricks(const std::vector<BrickPlacement>& pla
 
 void BrickWorld::judgePlacements() {
   WorldState& w = *state_;
-  if (w.model && w.judgement_pending) decide(&w, StabilityInput());
+  if (!w.model || !w.judgement_pending) return;
+  // What the judgement describes anew (every brick's supports and margin)
+  // is a change a reader of snapshotChangedSince() has not seen yet.
+  w.recordChange(WorldState::Change::kModel);
+  decide(&w, StabilityInput());
 }
 
 void BrickWorld::judgeAtRest(BrickRecord* brick, const BrickPlacement& placement,

@@ -344,7 +344,7 @@ TEST(ConvexSolid, NearestPointOfATetrahedron) {
   const ConvexSolid solid = polyhedronSolid(tetra);
   const PlacedSolid placed{at(Eigen::Vector3d(1, 2, 3)), &solid};
   const Eigen::Vector3d origin(1, 2, 3);
-  auto nearest = [&](const Eigen::Vector3d& p) {
+  auto nearest = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
     return nearestPointIn(placed, origin + p) - origin;
   };
   // Inside: itself. Above the slanted face's middle: its centre. Beyond a

@@ -150,6 +150,19 @@ bool anyOfTower(const std::set<std::string>& ids, char tower) {
   return false;
 }
 
+// Bricks placed at one instant (a paused node) are judged as a whole
+// later: what that judgement describes (supports, margins, COM-above) is
+// a change a publisher must be told of.
+TEST_P(ChangeTracking, BricksPlacedAtOneInstantAreReportedWhenJudged) {
+  for (int i = 0; i < 2 * kLayers; ++i) {
+    ASSERT_TRUE(world_->addBrick(test::towerBrick(i), nullptr, true).ok);
+    look("placing t" + std::to_string(i) + " with more to come");
+  }
+  world_->judgePlacements();
+  look("judging the tower as a whole");
+  stepAndLook(0.05, "after the judgement");
+}
+
 TEST_P(ChangeTracking, EveryChangeIsReportedAndASettledWorldReportsNothing) {
   buildTower("a", 0.0);
   buildTower("b", kTowerSpacing);
