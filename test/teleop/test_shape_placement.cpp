@@ -12,6 +12,7 @@
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/teleop/keyboard_command.h"
 #include "brick_stack_sim/teleop/placement_geometry.h"
+#include "support/shapes.h"
 
 namespace brick_stack_sim {
 namespace teleop {
@@ -21,17 +22,10 @@ constexpr double kRadius = 0.02;  // [m]
 constexpr double kLength = 0.05;  // [m]
 const Eigen::Vector3d kCubeSize(0.01, 0.01, 0.01);
 
-BrickType finished(BrickType type) {
-  EXPECT_TRUE(finishBrickType(&type, false).ok) << type.name;
-  return type;
-}
+BrickType finished(BrickType type) { return test::finishedType(std::move(type)); }
 
 BrickType cylinderType(double radius = kRadius, double length = kLength) {
-  BrickType t;
-  t.name = "peg";
-  t.shape = cylinderShape(radius, length);
-  t.mass = 0.1;
-  return finished(t);
+  return test::cylinderType("peg", radius, length, 0.1);
 }
 
 BrickType boxType(const Eigen::Vector3d& size) {

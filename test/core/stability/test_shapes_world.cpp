@@ -10,6 +10,7 @@
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
 #include "support/modes.h"
+#include "support/shapes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -18,34 +19,16 @@ using test::kKaplaLength;
 using test::kKaplaThickness;
 using test::kKaplaWidth;
 
-BrickType cylinderType(const std::string& name, double radius, double length, double mass,
-                       double rolling_friction) {
-  BrickType type;
-  type.name = name;
-  type.shape = cylinderShape(radius, length);
-  type.mass = mass;
-  type.rolling_friction = rolling_friction;
-  EXPECT_TRUE(finishBrickType(&type, false).ok);
-  return type;
-}
-
 /// A roof: a triangular prism lying on its base, `base` wide along x, `height`
 /// high, `depth` along y; its frame's origin in the middle of its base.
 BrickType roofType(double base, double height, double depth, double mass) {
-  BrickType type;
-  type.name = "roof";
-  type.shape.kind = ShapeKind::kConvex;
-  ShapePart part;
-  part.kind = ShapeKind::kConvex;
+  std::vector<Eigen::Vector3d> vertices;
   for (double y : {-depth / 2, depth / 2}) {
-    part.vertices.emplace_back(-base / 2, y, 0.0);
-    part.vertices.emplace_back(base / 2, y, 0.0);
-    part.vertices.emplace_back(0.0, y, height);
+    vertices.emplace_back(-base / 2, y, 0.0);
+    vertices.emplace_back(base / 2, y, 0.0);
+    vertices.emplace_back(0.0, y, height);
   }
-  type.shape.parts = {part};
-  type.mass = mass;
-  EXPECT_TRUE(finishBrickType(&type, false).ok);
-  return type;
+  return test::convexType("roof", vertices, mass);
 }
 
 std::unique_ptr<BrickWorld> worldWith(const std::string& mode,
@@ -82,7 +65,7 @@ class ShapesInMode : public ::testing::TestWithParam<std::string> {};
 // load centred on the tower's axis, which is the cylinder's. All stand.
 TEST_P(ShapesInMode, ACylinderOnEndCarriesAFourStackOfTenLayers) {
   const double length = 0.1;
-  auto world = worldWith(GetParam(), {cylinderType("drum", 0.05, length, 0.5, 0.0)});
+  auto world = worldWith(GetParam(), {test::cylinderType("drum", 0.05, length, 0.5, 0.0)});
   ASSERT_TRUE(world->addBrick(at("drum", "drum", Eigen::Vector3d(0, 0, length / 2))).ok);
   for (int i = 0; i < 20; ++i) {
     BrickPlacement p = test::towerBrick(i);
@@ -135,7 +118,7 @@ TEST_P(ShapesInMode, ARoofAcrossTwoPlanksStandsAndFallsBeyondItsBalancePoint) {
 // polygon, and with its centre 30 mm off that line it tips.
 TEST_P(ShapesInMode, APlankOffCentreOnALyingCylinderTips) {
   const double r = 0.02;
-  auto world = worldWith(GetParam(), {cylinderType("log", r, 0.06, 0.1, 0.01)});
+  auto world = worldWith(GetParam(), {test::cylinderType("log", r, 0.06, 0.1, 0.01)});
   const Eigen::Matrix3d lying =
       Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   ASSERT_TRUE(world->addBrick(at("log", "log", Eigen::Vector3d(0, 0, r), lying)).ok);
@@ -154,7 +137,7 @@ TEST_P(ShapesInMode, APlankOffCentreOnALyingCylinderTips) {
 // drum a length above the last.
 TEST_P(ShapesInMode, AColumnOfCylindersStands) {
   const double length = 0.06;
-  auto world = worldWith(GetParam(), {cylinderType("drum", 0.02, length, 0.05, 0.0)});
+  auto world = worldWith(GetParam(), {test::cylinderType("drum", 0.02, length, 0.05, 0.0)});
   ColumnParams params;
   params.count = 5;
   params.type = "drum";
@@ -196,7 +179,7 @@ TEST_P(MotionInMode, ALyingCylinderRollsWhenPushedAndStopsByRollingFriction) {
       Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   for (double rolling : {own_rolling, 0.0}) {
     SCOPED_TRACE("rolling friction " + std::to_string(rolling));
-    auto world = worldWith(GetParam(), {cylinderType("log", r, 0.06, m, rolling)});
+    auto world = worldWith(GetParam(), {test::cylinderType("log", r, 0.06, m, rolling)});
     ASSERT_TRUE(world->addBrick(at("log", "log", Eigen::Vector3d(0, 0, r), lying)).ok);
     ASSERT_TRUE(
         world->applyImpulse("log", Eigen::Vector3d(m * v0, 0, 0), Eigen::Vector3d(0, 0, r)).ok);
@@ -224,7 +207,7 @@ TEST_P(MotionInMode, ALyingCylinderRollsWhenPushedAndStopsByRollingFriction) {
 // takes speed out of the can.
 TEST_P(MotionInMode, AFastCanNeverPassesThroughAThinPlank) {
   const double r = 0.01;
-  auto world = worldWith(GetParam(), {cylinderType("can", r, 0.03, 0.05, 0.0)});
+  auto world = worldWith(GetParam(), {test::cylinderType("can", r, 0.03, 0.05, 0.0)});
   ASSERT_TRUE(
       world->addBrick(at("wall", "kapla", Eigen::Vector3d(0.0, 0.0, kKaplaLength / 2), standing()))
           .ok);

@@ -9,6 +9,7 @@
 
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
+#include "support/shapes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -19,12 +20,7 @@ class ShapedRequests : public ::testing::Test {
  protected:
   void SetUp() override {
     BrickTypeLibrary types = test::packageTypes();
-    BrickType can;
-    can.name = "can";
-    can.shape = cylinderShape(kRadius, kLength);
-    can.mass = 0.1;
-    ASSERT_TRUE(finishBrickType(&can, false).ok);
-    ASSERT_TRUE(types.add(can).ok);
+    ASSERT_TRUE(types.add(test::cylinderType("can", kRadius, kLength, 0.1)).ok);
     ASSERT_TRUE(BrickWorld::create(test::optionsFor("com"), types, &world_).ok);
     ASSERT_TRUE(world_->addBrick(canAt("base", Eigen::Vector3d(0, 0, kLength / 2))).ok);
   }

@@ -14,6 +14,7 @@
 
 #include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/ros/markers.h"
+#include "support/shapes.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -30,18 +31,9 @@ constexpr double kWedgeA = 0.03;   // [m]
 constexpr double kWedgeB = 0.02;   // [m]
 constexpr double kWedgeH = 0.015;  // [m]
 
-BrickType finished(BrickType type) {
-  EXPECT_TRUE(finishBrickType(&type, false).ok) << type.name;
-  return type;
-}
+BrickType finished(BrickType type) { return test::finishedType(std::move(type)); }
 
-BrickType cylinderType() {
-  BrickType t;
-  t.name = "peg";
-  t.shape = cylinderShape(kRadius, kLength);
-  t.mass = 0.1;
-  return finished(t);
-}
+BrickType cylinderType() { return test::cylinderType("peg", kRadius, kLength, 0.1); }
 
 ShapePart wedgePart() {
   ShapePart part;
