@@ -28,12 +28,17 @@ bool waitForService(const std::string& name, double timeout) {
 }
 
 /// Every service of the node.
-constexpr const char* kServices[] = {
-    ros_adapter::kPlaceBrickService, ros_adapter::kRemoveBrickService,
-    ros_adapter::kResetService,      ros_adapter::kGetBricksService,
-    ros_adapter::kPushBrickService,  ros_adapter::kQueryPlacementService,
-    ros_adapter::kPauseService,      ros_adapter::kStepService,
-    ros_adapter::kGraspBrickService, ros_adapter::kReleaseBrickService};
+constexpr const char* kServices[] = {ros_adapter::kPlaceBrickService,
+                                     ros_adapter::kRemoveBrickService,
+                                     ros_adapter::kResetService,
+                                     ros_adapter::kGetBricksService,
+                                     ros_adapter::kPushBrickService,
+                                     ros_adapter::kQueryPlacementService,
+                                     ros_adapter::kQueryPlacementsService,
+                                     ros_adapter::kPauseService,
+                                     ros_adapter::kStepService,
+                                     ros_adapter::kGraspBrickService,
+                                     ros_adapter::kReleaseBrickService};
 
 std::string notAvailable(const std::string& service, double waited) {
   return "service " + service + " not available after " + formatSeconds(waited) + " s";
@@ -128,6 +133,11 @@ Reply<PushBrick::Response> SimClient::pushBrick(const PushBrick::Request& reques
 
 Reply<QueryPlacement::Response> SimClient::queryPlacement(const QueryPlacement::Request& request) {
   return call<QueryPlacement>(kQuery, ros_adapter::kQueryPlacementService, request);
+}
+
+Reply<QueryPlacements::Response> SimClient::queryPlacements(
+    const QueryPlacements::Request& request) {
+  return call<QueryPlacements>(kQueryMany, ros_adapter::kQueryPlacementsService, request);
 }
 
 Reply<std_srvs::SetBool::Response> SimClient::pause(bool paused) {

@@ -114,6 +114,7 @@ void SimNode::advertiseServices() {
   services_.push_back(advertiseGuarded(kGetBricksService, &SimNode::getBricks));
   services_.push_back(advertiseGuarded(kPushBrickService, &SimNode::pushBrick));
   services_.push_back(advertiseGuarded(kQueryPlacementService, &SimNode::queryPlacement));
+  services_.push_back(advertiseGuarded(kQueryPlacementsService, &SimNode::queryPlacements));
   services_.push_back(advertiseGuarded(kPauseService, &SimNode::pause));
   services_.push_back(advertiseGuarded(kStepService, &SimNode::step, &long_work_queue_));
   services_.push_back(advertiseGuarded(kGraspBrickService, &SimNode::graspBrick));

@@ -56,6 +56,26 @@ bool SimNode::placeBrick(PlaceBrick::Request& request, PlaceBrick::Response& res
   return true;
 }
 
+namespace {
+
+/// What ~query_placement answers and ~query_placements answers per pose.
+template <typename Answer>
+void fillAnswer(const PlacementReport& report, Answer* answer) {
+  answer->message = report.reason;
+  answer->stable = report.stable;
+  answer->state = static_cast<std::uint8_t>(report.state);
+  answer->margin = report.margin;
+  answer->acceleration_margin = report.acceleration_margin;
+  answer->supported_by = report.supported_by;
+  answer->would_fall = report.would_fall;
+}
+
+/// Most poses one ~query_placements may ask about: a planner's candidates,
+/// not a map of the table (10^5 verdicts are some 10 MB).
+constexpr std::size_t kMaxQueriedPoses = 100000;
+
+}  // namespace
+
 bool SimNode::queryPlacement(QueryPlacement::Request& request, QueryPlacement::Response& response) {
   BrickPlacement placement;
   placement.type = request.type;
@@ -68,13 +88,51 @@ bool SimNode::queryPlacement(QueryPlacement::Request& request, QueryPlacement::R
       return refuse(kQueryPlacementService, answered, &response);
   }
   response.success = true;
-  response.message = report.reason;
-  response.stable = report.stable;
-  response.state = static_cast<std::uint8_t>(report.state);
-  response.margin = report.margin;
-  response.acceleration_margin = report.acceleration_margin;
-  response.supported_by = report.supported_by;
-  response.would_fall = report.would_fall;
+  fillAnswer(report, &response);
+  return true;
+}
+
+bool SimNode::queryPlacements(QueryPlacements::Request& request,
+                              QueryPlacements::Response& response) {
+  const std::size_t count = request.poses.size();
+  if (count > kMaxQueriedPoses)
+    return refuse(kQueryPlacementsService,
+                  Status::error(std::to_string(count) + " poses, more than " +
+                                std::to_string(kMaxQueriedPoses) + " in one request"),
+                  &response);
+  if (request.types.size() > 1 && request.types.size() != count)
+    return refuse(
+        kQueryPlacementsService,
+        Status::error("types has " + std::to_string(request.types.size()) + " entries for " +
+                      std::to_string(count) + " poses: give one per pose, one for all, or none"),
+        &response);
+  std::vector<BrickPlacement> placements(count);
+  std::vector<Status> converted(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!request.types.empty())
+      placements[i].type = request.types[request.types.size() > 1 ? i : 0];
+    converted[i] =
+        fromMsg(request.poses[i], "poses[" + std::to_string(i) + "]", &placements[i].pose);
+  }
+  response.verdicts.resize(count);
+  {
+    // One hold of the world: every pose is judged against the same state.
+    std::lock_guard<TicketMutex> lock(world_mutex_);
+    for (std::size_t i = 0; i < count; ++i) {
+      PlacementVerdict& verdict = response.verdicts[i];
+      PlacementReport report;
+      Status answered = converted[i];
+      if (answered) answered = simulation_->world().evaluatePlacement(placements[i], &report);
+      verdict.valid = answered.ok;
+      if (answered) {
+        fillAnswer(report, &verdict);
+      } else {
+        verdict.message = answered.message;
+      }
+    }
+  }
+  response.success = true;
+  response.message = std::to_string(count) + " poses judged";
   return true;
 }
 

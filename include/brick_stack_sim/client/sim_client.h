@@ -28,6 +28,7 @@
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/QueryPlacement.h"
+#include "brick_stack_sim/QueryPlacements.h"
 #include "brick_stack_sim/ReleaseBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
@@ -129,6 +130,8 @@ class SimClient {
   Reply<PushBrick::Response> pushBrick(const PushBrick::Request& request);
   /// ~query_placement: would a brick of request.type rest at request.pose?
   Reply<QueryPlacement::Response> queryPlacement(const QueryPlacement::Request& request);
+  /// ~query_placements: query_placement for every pose of request.poses at once.
+  Reply<QueryPlacements::Response> queryPlacements(const QueryPlacements::Request& request);
   /// ~pause (std_srvs/SetBool): pauses (true) or resumes (false) the node.
   Reply<std_srvs::SetBool::Response> pause(bool paused);
   /// ~step: advances a paused node by `steps` fixed time steps.
@@ -174,6 +177,7 @@ class SimClient {
     kGet,
     kPush,
     kQuery,
+    kQueryMany,
     kPause,
     kStep,
     kGrasp,

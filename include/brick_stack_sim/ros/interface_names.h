@@ -24,6 +24,7 @@ constexpr char kResetService[] = "reset";
 constexpr char kGetBricksService[] = "get_bricks";
 constexpr char kPushBrickService[] = "push_brick";
 constexpr char kQueryPlacementService[] = "query_placement";
+constexpr char kQueryPlacementsService[] = "query_placements";
 constexpr char kPauseService[] = "pause";
 constexpr char kStepService[] = "step";
 constexpr char kGraspBrickService[] = "grasp_brick";

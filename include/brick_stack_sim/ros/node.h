@@ -14,6 +14,7 @@
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/QueryPlacement.h"
+#include "brick_stack_sim/QueryPlacements.h"
 #include "brick_stack_sim/ReleaseBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
@@ -119,6 +120,7 @@ class SimNode {
   bool getBricks(GetBricks::Request& request, GetBricks::Response& response);
   bool pushBrick(PushBrick::Request& request, PushBrick::Response& response);
   bool queryPlacement(QueryPlacement::Request& request, QueryPlacement::Response& response);
+  bool queryPlacements(QueryPlacements::Request& request, QueryPlacements::Response& response);
   bool pause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   bool step(StepSimulation::Request& request, StepSimulation::Response& response);
   bool graspBrick(GraspBrick::Request& request, GraspBrick::Response& response);

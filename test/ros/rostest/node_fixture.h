@@ -60,6 +60,10 @@ inline client::Reply<QueryPlacement::Response> send(client::SimClient& sim,
                                                     const QueryPlacement::Request& request) {
   return sim.queryPlacement(request);
 }
+inline client::Reply<QueryPlacements::Response> send(client::SimClient& sim,
+                                                     const QueryPlacements::Request& request) {
+  return sim.queryPlacements(request);
+}
 inline client::Reply<std_srvs::SetBool::Response> send(client::SimClient& sim,
                                                        const std_srvs::SetBool::Request& request) {
   return sim.pause(request.data);

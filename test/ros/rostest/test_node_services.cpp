@@ -515,6 +515,64 @@ TEST_F(NodeServices, QueryPlacementAnswersByStaticsAndChangesNothing) {
   ASSERT_TRUE(setPaused(false));
 }
 
+// Many poses in one request: each answered as ~query_placement answers it
+// alone, a refusal per pose where it would refuse, in request order.
+TEST_F(NodeServices, QueryPlacementsAnswerEachPoseAsQueryPlacementDoes) {
+  ASSERT_TRUE(place("a", 0.0, 0.0, kHalfHeight).success);
+  ASSERT_TRUE(setPaused(true));
+  const std::vector<std::pair<double, double>> spots = {
+      {0.0, 3 * kHalfHeight},    // centred on a: stable
+      {0.03, 3 * kHalfHeight},   // over a still
+      {0.07, 3 * kHalfHeight},   // COM past a's end: falls
+      {0.0, kHalfHeight},        // inside a: refused
+      {0.3, -0.02},              // under the table: refused
+      {kNaN, 3 * kHalfHeight}};  // not finite: refused
+  QueryPlacements many;
+  for (const auto& [x, z] : spots) {
+    geometry_msgs::Pose pose;
+    pose.position.x = x;
+    pose.position.z = z;
+    pose.orientation.w = 1.0;
+    many.request.poses.push_back(pose);
+  }
+  const QueryPlacements::Response answer = call(many);
+  ASSERT_TRUE(answer.success) << answer.message;
+  ASSERT_EQ(answer.verdicts.size(), spots.size());
+  for (std::size_t i = 0; i < spots.size(); ++i) {
+    QueryPlacement one;
+    one.request.pose = many.request.poses[i];
+    const QueryPlacement::Response alone = call(one);
+    const PlacementVerdict& verdict = answer.verdicts[i];
+    EXPECT_EQ(verdict.valid, alone.success) << i << ": " << verdict.message;
+    if (!alone.success) {
+      // The same reason; a field is named by its place in the request.
+      const std::string why = alone.message.substr(alone.message.find(' '));
+      EXPECT_NE(verdict.message.find(why), std::string::npos) << verdict.message;
+      continue;
+    }
+    EXPECT_EQ(verdict.message, alone.message) << i;
+    EXPECT_EQ(verdict.stable, alone.stable) << i;
+    EXPECT_EQ(verdict.state, alone.state) << i;
+    EXPECT_EQ(verdict.margin, alone.margin) << i;
+    EXPECT_EQ(verdict.acceleration_margin, alone.acceleration_margin) << i;
+    EXPECT_EQ(verdict.supported_by, alone.supported_by) << i;
+    EXPECT_EQ(verdict.would_fall, alone.would_fall) << i;
+  }
+  // By statics, not by the single query: the first two rest on a, the third
+  // does not, the last three are refused.
+  EXPECT_TRUE(answer.verdicts[0].stable && answer.verdicts[1].stable);
+  EXPECT_FALSE(answer.verdicts[2].stable);
+  for (std::size_t i = 3; i < spots.size(); ++i) EXPECT_FALSE(answer.verdicts[i].valid) << i;
+  // Types: one per pose, one for all, or none; anything else is refused whole.
+  many.request.types = {"kapla", "kapla"};
+  expectRefused(call(many), "two types for six poses");
+  many.request.types = {"no_such_type"};
+  const QueryPlacements::Response unknown = call(many);
+  ASSERT_TRUE(unknown.success);
+  for (const PlacementVerdict& verdict : unknown.verdicts) EXPECT_FALSE(verdict.valid);
+  ASSERT_TRUE(setPaused(false));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -271,6 +271,17 @@ class ServiceFuzz : public test::NodeFixture {
         return;
       }
       case 5: {
+        if (chance(0.3)) {
+          // Many poses at once, each as hostile as one.
+          QueryPlacements srv;
+          for (int i = static_cast<int>(pick({0, 1, 3})); i > 0; --i)
+            srv.request.poses.push_back(pose());
+          if (!callInTime(srv)) return;
+          tally(ros_adapter::kQueryPlacementsService, srv.response);
+          for (const PlacementVerdict& verdict : srv.response.verdicts)
+            EXPECT_TRUE(finite(verdict.margin) && finite(verdict.acceleration_margin));
+          return;
+        }
         QueryPlacement srv;
         srv.request.pose = pose();
         if (!callInTime(srv)) return;
