@@ -42,5 +42,18 @@ inline BrickType convexType(const std::string& name, std::vector<Eigen::Vector3d
   return finishedType(type);
 }
 
+/// A ramp over x in [-half_x, half_x], y in [-half_y, half_y], rising from
+/// 0 to `height` [m] towards y = -half_y, its bottom at z = 0 of its frame.
+inline BrickType rampType(const std::string& name, double half_x, double half_y, double height,
+                          double mass) {
+  std::vector<Eigen::Vector3d> vertices;
+  for (double x : {-half_x, half_x}) {
+    vertices.emplace_back(x, -half_y, 0.0);
+    vertices.emplace_back(x, half_y, 0.0);
+    vertices.emplace_back(x, -half_y, height);
+  }
+  return convexType(name, vertices, mass);
+}
+
 }  // namespace test
 }  // namespace brick_stack_sim

@@ -38,21 +38,7 @@ BrickType boxType(const Eigen::Vector3d& size) {
 
 /// A ramp over x in [-0.03, 0.03], y in [-0.02, 0.02], 0.015 m high over
 /// y = -0.02, its bottom at z = 0 of its frame.
-BrickType wedgeType() {
-  BrickType t;
-  t.name = "wedge";
-  t.shape.kind = ShapeKind::kConvex;
-  ShapePart part;
-  part.kind = ShapeKind::kConvex;
-  for (double x : {-0.03, 0.03}) {
-    part.vertices.emplace_back(x, -0.02, 0.0);
-    part.vertices.emplace_back(x, 0.02, 0.0);
-    part.vertices.emplace_back(x, -0.02, 0.015);
-  }
-  t.shape.parts = {part};
-  t.mass = 0.05;
-  return finished(t);
-}
+BrickType wedgeType() { return test::rampType("wedge", 0.03, 0.02, 0.015, 0.05); }
 
 Eigen::Isometry3d at(double x, double y, double z,
                      const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {

@@ -35,25 +35,7 @@ BrickType finished(BrickType type) { return test::finishedType(std::move(type));
 
 BrickType cylinderType() { return test::cylinderType("peg", kRadius, kLength, 0.1); }
 
-ShapePart wedgePart() {
-  ShapePart part;
-  part.kind = ShapeKind::kConvex;
-  for (double x : {-kWedgeA, kWedgeA}) {
-    part.vertices.emplace_back(x, -kWedgeB, 0.0);
-    part.vertices.emplace_back(x, kWedgeB, 0.0);
-    part.vertices.emplace_back(x, -kWedgeB, kWedgeH);
-  }
-  return part;
-}
-
-BrickType wedgeType() {
-  BrickType t;
-  t.name = "wedge";
-  t.shape.kind = ShapeKind::kConvex;
-  t.shape.parts = {wedgePart()};
-  t.mass = 0.05;
-  return finished(t);
-}
+BrickType wedgeType() { return test::rampType("wedge", kWedgeA, kWedgeB, kWedgeH, 0.05); }
 
 /// A box 0.04 x 0.02 x 0.01 m at x = -0.02 and a cylinder (r 0.01 m,
 /// length 0.02 m) lying along y at x = +0.03, in the type frame.
