@@ -23,7 +23,6 @@ const double kGravity = StaticsOptions().gravity;
 /// (a brick tipping off it, a hand pressing) is far past it.
 constexpr double kMeasuredLoadFactor = 0.98;
 
-
 /// The resultant of a brick's vertical load (`mass` acting through
 /// `centre`) and `pushes`, where its line of action crosses the plane
 /// z = `height`.
@@ -107,14 +106,16 @@ bool resolvePushes(BodyHandle handle, SupportGraph::Node* node, double* mass,
 /// Each frozen supporter of `node` receives its share of the brick's
 /// `mass`, at `height` (the table carries anything), and, in proportion,
 /// the `sideways` part of its load, which friction at the interface carries.
-void passSharesDown(SupportGraph* graph, const SupportGraph::Node& node, double mass, double height,
-                    const Eigen::Vector2d& sideways, std::vector<LoadShare>* shares) {
+void passSharesDown(SupportGraph* graph, BodyHandle handle, const SupportGraph::Node& node,
+                    double mass, double height, const Eigen::Vector2d& sideways,
+                    std::vector<LoadShare>* shares) {
   for (std::size_t i = 0; i < node.supports.size(); ++i) {
     SupportGraph::Node* below = graph->find(node.supports[i].supporter);
     if (!below) continue;  // the table carries anything
     LoadShare& share = (*shares)[i];
     share.height = height;
     below->received.push_back(share);
+    below->received_from.push_back(handle);
     // Friction at the interface carries the sideways part, in proportion.
     if (!sideways.isZero())
       below->pushes.push_back(
@@ -276,7 +277,7 @@ bool ComCriterion::passLoadDown(SupportGraph* graph, BodyHandle handle,
     if (stays) unstable->push_back(outsideSupport(handle, node.stability.margin));
     return false;
   }
-  passSharesDown(graph, node, mass, com_above.z(), resultant.sideways, shares);
+  passSharesDown(graph, handle, node, mass, com_above.z(), resultant.sideways, shares);
   return stays;
 }
 
@@ -349,6 +350,7 @@ std::vector<WakeDecision> ComCriterion::checkLoadsDown(SupportGraph* graph,
   for (BodyHandle handle : component) {
     SupportGraph::Node& node = *graph->find(handle);
     node.received.clear();
+    node.received_from.clear();
     // What movers and held bricks press on it, then what bricks of the
     // stack push it with.
     node.pushes = node.stability.external_loads;

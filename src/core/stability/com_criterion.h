@@ -34,6 +34,8 @@ class ComCriterion : public StabilityCriterion {
   std::vector<WakeDecision> check(SupportGraph* graph,
                                   const std::vector<BodyHandle>& component) const override;
   bool usesSideContacts() const override { return true; }
+  /// Statics is asked only where the COM rule fails (check()).
+  bool trustsComRulePasses() const override { return true; }
   bool admitsGroup(const std::vector<BodyMotion>& group,
                    const std::vector<BrickStability>& stability,
                    std::vector<FreezeDecision>* decisions) const override;

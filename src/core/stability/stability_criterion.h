@@ -41,6 +41,10 @@ class StabilityCriterion {
                            std::vector<FreezeDecision>* /*decisions*/) const {
     return false;
   }
+  /// Whether check() finds a component stable wherever the COM rule passes
+  /// on every brick of it: a what-if may then skip check() when the rule
+  /// passes on each brick a new load reaches (comRuleBearsPlacement).
+  virtual bool trustsComRulePasses() const { return false; }
 };
 
 }  // namespace brick_stack_sim

@@ -9,6 +9,7 @@
 
 #include "stability/contact_classifier.h"
 #include "stability/impact_rule.h"
+#include "stability/placement_load.h"
 #include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
 #include "util/text_format.h"
@@ -189,7 +190,16 @@ PlacementEvaluation StackStabilityModel::evaluatePlacement(
                         : "it would not rest stably: margin " + millimetres(stability.margin);
     return result;
   }
-  // Its load on the stack below, judged on a copy of the components it joins.
+  // Where the COM rule bears its weight on every brick below, the criterion
+  // would find nothing to wake; elsewhere the what-if is judged in full, on a
+  // copy of the components it joins.
+  if (criterion_->trustsComRulePasses() &&
+      comRuleBearsPlacement(graph_, brick, stability, options_.min_margin)) {
+    result.stable = true;
+    result.kind = decision.kind;
+    result.reason = decision.reason;
+    return result;
+  }
   SupportGraph what_if = joinedCopy(brick, stability, decision);
   StabilityDecisions consequences;
   settle(&what_if, nullptr, &consequences);

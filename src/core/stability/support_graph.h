@@ -33,6 +33,8 @@ class SupportGraph {
     /// load-passing criterion found them in its last check (kept here, not
     /// rebuilt, so a check allocates nothing for bricks it saw before).
     std::vector<LoadShare> received;
+    /// The brick that passed each share of `received`, in the same order.
+    std::vector<BodyHandle> received_from;
     /// The forces of frozen leaning bricks on it, sideways parts included,
     /// and the sideways part of what it carries, where they act (the last
     /// check's, as `received`).

@@ -1,10 +1,14 @@
 // The what-if of BrickWorld::evaluatePlacement against statics, in a real
 // world: a plank overhanging the table's edge carries a second plank as long
 // as their common centre of mass stays over the table.
+#include <algorithm>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "brick_stack_sim/core/world/brick_world.h"
 #include "support/kapla.h"
+#include "support/modes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -159,6 +163,100 @@ TEST(PlacementStatics, AFrozenBrickAboveDoesNotHoldAQueriedBrickDown) {
   EXPECT_TRUE(report.stable) << report.reason;
   EXPECT_EQ(report.state, BrickState::kStable);
 }
+
+}  // namespace
+}  // namespace brick_stack_sim
+
+namespace brick_stack_sim {
+namespace {
+
+/// A frozen staircase of planks along x, each `step` further out than the
+/// one below; a plank queried on top at x. By statics (every plank a lever
+/// about the edge of the one below, friction never asked), the stair with
+/// the new plank stands while, for every plank k >= 1, the common centre of
+/// k and of everything above it, the new plank included, lies over plank
+/// k - 1 (within L / 2 of its centre); plank 0 lies well inside the table.
+class StaircaseQuery : public ::testing::TestWithParam<std::string> {
+ protected:
+  static constexpr int kLevels = 8;
+  static constexpr double kStep = 0.012;  ///< [m]
+
+  void SetUp() override {
+    world_ = test::makeWorld(test::optionsFor(GetParam()));
+    for (int k = 0; k < kLevels; ++k) {
+      ASSERT_TRUE(world_
+                      ->addBrick(placement("s" + std::to_string(k),
+                                           {levelX(k), 0.0, (k + 0.5) * kKaplaThickness}))
+                      .ok);
+    }
+    for (int k = 0; k < kLevels; ++k) {
+      BrickSnapshot brick;
+      ASSERT_TRUE(world_->find("s" + std::to_string(k), &brick));
+      ASSERT_EQ(brick.state, BrickState::kStable) << brick.id;
+    }
+  }
+
+  static double levelX(int k) { return k * kStep; }
+
+  /// The largest x of the new plank by statics [m], and the plank that
+  /// tips first beyond it (kLevels: the new plank itself): the least over
+  /// k of n_k (x_{k-1} + L/2) - (x_k + ... + x_top), n_k the planks from k
+  /// up, the new one included.
+  static double limit(int* first_to_tip) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int k = 1; k <= kLevels; ++k) {
+      double sum = 0.0;
+      for (int j = k; j < kLevels; ++j) sum += levelX(j);
+      const double n = kLevels - k + 1;
+      const double x = n * (levelX(k - 1) + test::kKaplaLength / 2) - sum;
+      if (x < best) best = x, *first_to_tip = k;
+    }
+    return best;
+  }
+
+  PlacementReport query(double x) {
+    PlacementReport report;
+    EXPECT_TRUE(world_
+                    ->evaluatePlacement(placement("q", {x, 0.0, (kLevels + 0.5) * kKaplaThickness}),
+                                        &report)
+                    .ok);
+    return report;
+  }
+
+  std::unique_ptr<BrickWorld> world_;
+};
+
+TEST_P(StaircaseQuery, TheLoadOfANewPlankIsJudgedOnEveryLevelBelow) {
+  int first = -1;
+  const double x_max = limit(&first);
+  // With 12 mm steps the stair's own weight leaves the lowest planks the
+  // least room: the limit is set well below the top, by plank 1 on plank 0
+  // (x_max = 8 (0 + 58.5) - 12 (1 + ... + 7) = 132 mm).
+  ASSERT_EQ(first, 1);
+  ASSERT_NEAR(x_max, 0.132, 1e-12);
+  const std::string before = test::fingerprint(*world_);
+  for (double inside : {0.02, 0.005, 0.0005}) {
+    const PlacementReport report = query(x_max - inside);
+    EXPECT_TRUE(report.stable) << inside << ": " << report.reason;
+    EXPECT_TRUE(report.would_fall.empty()) << inside;
+    EXPECT_EQ(report.supported_by, std::vector<std::string>{"s" + std::to_string(kLevels - 1)});
+  }
+  for (double beyond : {0.0005, 0.005}) {
+    const PlacementReport report = query(x_max + beyond);
+    EXPECT_FALSE(report.stable) << beyond;
+    // Everything from the plank that tips up tips with it.
+    std::vector<std::string> expected;
+    for (int k = first; k < kLevels; ++k) expected.push_back("s" + std::to_string(k));
+    std::sort(expected.begin(), expected.end());
+    std::vector<std::string> fell = report.would_fall;
+    std::sort(fell.begin(), fell.end());
+    EXPECT_EQ(fell, expected) << beyond << ": " << report.reason;
+  }
+  EXPECT_TRUE(test::fingerprint(*world_) == before) << "a query changed the world";
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, StaircaseQuery, ::testing::ValuesIn(test::modelModes()),
+                         test::modeName);
 
 }  // namespace
 }  // namespace brick_stack_sim
