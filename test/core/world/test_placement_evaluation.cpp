@@ -260,3 +260,55 @@ INSTANTIATE_TEST_SUITE_P(Modes, StaircaseQuery, ::testing::ValuesIn(test::modelM
 
 }  // namespace
 }  // namespace brick_stack_sim
+
+namespace brick_stack_sim {
+namespace {
+
+/// `p` turned by `angle` [rad] about the y axis through its centre.
+BrickPlacement tilted(BrickPlacement p, double angle) {
+  p.pose.linear() = p.pose.linear() * Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).matrix();
+  return p;
+}
+
+TEST(PlacementStatics, LevelSupportsAreJudgedInClosedFormAsTheLpJudgesThem) {
+  // A brick placed level on level supports is judged without the LP; tilted
+  // by 0.1 micro-radian it goes to the LP. The two must agree: the same
+  // verdict, and the same least acceleration to within what the tilt moves.
+  auto world = test::makeWorld(test::optionsFor("com"));
+  ASSERT_TRUE(world->addBrick(placement("a", {0.0, 0.0, 0.5 * kKaplaThickness})).ok);
+  ASSERT_TRUE(world->addBrick(placement("b", {0.0, 0.08, 0.5 * kKaplaThickness})).ok);
+  const double on_one = 1.5 * kKaplaThickness;
+  std::vector<BrickPlacement> queries = {
+      placement("q", {0.2, 0.0, 0.5 * kKaplaThickness}),      // on the table
+      placement("q", {0.0, 0.0, on_one}),                     // on a, flush
+      placement("q", {0.05, 0.0, on_one}),                    // on a, 50 mm out
+      placement("q", {0.065, 0.0, on_one}),                   // its COM beyond a
+      placement("q", {0.0, 0.01, on_one}),                    // on a, 10 mm aside
+      placement("q", {0.0, 0.04, on_one}, M_PI / 2),          // across a and b
+      placement("q", {0.03, 0.045, on_one}, M_PI / 2 + 0.3),  // askew across both
+      placement("q", {-0.04, -0.004, on_one}, 0.7),           // turned on a
+  };
+  BrickPlacement upright = placement("q", {0.2, 0.1, 0.5 * test::kKaplaLength});
+  upright.pose.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).matrix();
+  queries.push_back(upright);
+  int stood = 0;
+  for (const BrickPlacement& level : queries) {
+    PlacementReport closed, by_lp;
+    ASSERT_TRUE(world->evaluatePlacement(level, &closed).ok);
+    ASSERT_TRUE(world->evaluatePlacement(tilted(level, 1e-7), &by_lp).ok);
+    const std::string where = std::to_string(level.pose.translation().x()) + ", " +
+                              std::to_string(level.pose.translation().y());
+    EXPECT_EQ(closed.stable, by_lp.stable)
+        << where << ": " << closed.reason << " / " << by_lp.reason;
+    EXPECT_EQ(closed.supported_by, by_lp.supported_by) << where;
+    EXPECT_NEAR(closed.acceleration_margin, by_lp.acceleration_margin,
+                1e-4 * by_lp.acceleration_margin + 1e-6)
+        << where;
+    stood += closed.stable;
+  }
+  // All but the plank 65 mm out, its COM 6.5 mm beyond a's end, stand.
+  EXPECT_EQ(stood, static_cast<int>(queries.size()) - 1);
+}
+
+}  // namespace
+}  // namespace brick_stack_sim
