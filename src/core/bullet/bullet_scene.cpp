@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
@@ -12,6 +13,7 @@
 #include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"
+#include "bullet/bullet_scene_impl.h"
 #include "bullet/time_of_impact.h"
 
 namespace brick_stack_sim {
@@ -26,60 +28,6 @@ btScalar combinedFriction(const btCollisionObject* a, const btCollisionObject* b
 }
 
 }  // namespace
-
-struct BulletScene::Impl {
-  struct Body {
-    std::unique_ptr<btRigidBody> rigid;
-    bool in_world = false;
-    /// The centre of mass and principal axes in the type frame: Bullet's
-    /// body frame. Identity (the body frame is the type frame) for a box.
-    Eigen::Isometry3d mass_frame = Eigen::Isometry3d::Identity();
-    bool centred = true;
-  };
-
-  WorldOptions options;
-  // Declaration order is destruction order in reverse: the world goes first.
-  std::unique_ptr<btDefaultCollisionConfiguration> collision_configuration;
-  std::unique_ptr<btCollisionDispatcher> dispatcher;
-  std::unique_ptr<btCollisionAlgorithmCreateFunc> box_box_algorithm;
-  std::unique_ptr<btBroadphaseInterface> broadphase;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
-  std::map<std::string, std::unique_ptr<btCollisionShape>> shapes;  // one per brick type
-  // A compound's children, a hull's shrunk copies: owned apart from the shapes.
-  std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
-  std::unique_ptr<btBoxShape> table_shape;
-  std::unique_ptr<btStaticPlaneShape> floor_shape;
-  std::unique_ptr<btRigidBody> table_body;
-  std::unique_ptr<btRigidBody> floor_body;
-  // By handle. A map, not a vector indexed by serial: serials are never
-  // reused, and a node that places and removes bricks for hours would keep
-  // an entry for every brick it ever had.
-  std::unordered_map<BodyHandle, Body> bodies;
-  std::unique_ptr<btDiscreteDynamicsWorld> world;
-
-  explicit Impl(const WorldOptions& world_options);
-  ~Impl();
-  btCollisionShape* shapeFor(const BrickType& type);
-  /// Bullet's transform of a brick's body for the type frame at `pose`, and back.
-  btTransform toBody(const Body& body, const Eigen::Isometry3d& pose) const {
-    return convertEigenToBt(body.centred ? pose : pose * body.mass_frame);
-  }
-  Eigen::Isometry3d fromBody(const Body& body, const btTransform& transform) const {
-    const Eigen::Isometry3d at = convertBtToEigen(transform);
-    return body.centred ? at : at * body.mass_frame.inverse();
-  }
-  Body& body(BodyHandle handle) { return bodies.at(handle); }
-  const Body& body(BodyHandle handle) const { return bodies.at(handle); }
-  btRigidBody& rigid(BodyHandle handle) { return *body(handle).rigid; }
-  const btRigidBody& rigid(BodyHandle handle) const { return *body(handle).rigid; }
-  /// A brick's body, or the table's; null for the floor.
-  const btRigidBody* bodyOrTable(BodyHandle handle) const {
-    if (handle == kTableHandle) return table_body.get();
-    if (isGround(handle)) return nullptr;
-    const auto found = bodies.find(handle);  // a removed brick's: none
-    return found == bodies.end() ? nullptr : found->second.rigid.get();
-  }
-};
 
 BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_options) {
   collision_configuration = std::make_unique<btDefaultCollisionConfiguration>();

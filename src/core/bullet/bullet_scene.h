@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -50,6 +51,14 @@ class BulletScene {
   void addBrick(BodyHandle handle, const BrickType& type, const BrickPlacement& placement);
   /// Takes the body out of Bullet's world and destroys it.
   void removeBrick(BodyHandle handle);
+  /// The body `handle` of `source`, of `type`, in its exact state (pose,
+  /// velocities, dynamics, activation and sleeping timer, bit for bit), out
+  /// of Bullet's world: the caller adds it (worldOrder()).
+  void copyBrick(BodyHandle handle, const BrickType& type, const BulletScene& source);
+  /// The bricks in Bullet's world in the order Bullet numbered them as they
+  /// came in, which orders its pairs and contacts: a copy that adds them in
+  /// this order solves them in the same order.
+  std::vector<BodyHandle> worldOrder() const;
 
   void addToWorld(BodyHandle handle);       ///< No-op when already in.
   void removeFromWorld(BodyHandle handle);  ///< No-op when not in.

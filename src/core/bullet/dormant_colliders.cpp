@@ -43,6 +43,18 @@ void DormantColliders::add(BodyHandle frozen) {
                          reinterpret_cast<void*>(static_cast<std::uintptr_t>(frozen)));
 }
 
+void DormantColliders::copyFrom(const DormantColliders& source) {
+  std::vector<BodyHandle> frozen;
+  for (const auto& entry : source.impl_->leaves) frozen.push_back(entry.first);
+  // The tree's shape follows insertion order; near() sorts what it finds.
+  std::sort(frozen.begin(), frozen.end());
+  for (BodyHandle handle : frozen) {
+    add(handle);
+    impl_->leaves.at(handle).needed_at_step = source.impl_->leaves.at(handle).needed_at_step;
+  }
+  in_world_ = source.in_world_;
+}
+
 void DormantColliders::remove(BodyHandle frozen) {
   auto found = impl_->leaves.find(frozen);
   if (found == impl_->leaves.end()) return;

@@ -38,6 +38,10 @@ class DormantColliders {
 
   /// A brick just made static, out of Bullet's world, starts waiting here.
   void add(BodyHandle frozen);
+  /// `source`'s frozen bricks, with when a mover last came near each, and
+  /// its list of those in Bullet's world; the caller has copied their
+  /// bodies into this scene and added those to its world.
+  void copyFrom(const DormantColliders& source);
   /// It stops being a frozen collider: out of the tree and of Bullet's world.
   void remove(BodyHandle frozen);
   /// A frozen brick was moved (an impact slid it): its box in the tree follows.

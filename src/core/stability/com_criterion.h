@@ -1,5 +1,8 @@
 #pragma once
 
+#include <memory>
+#include <utility>
+
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_criterion.h"
 #include "stability/support_graph.h"
@@ -33,6 +36,11 @@ class ComCriterion : public StabilityCriterion {
               FreezeDecision* decision) const override;
   std::vector<WakeDecision> check(SupportGraph* graph,
                                   const std::vector<BodyHandle>& component) const override;
+  std::unique_ptr<StabilityCriterion> clone(BodyNamer name_of) const override {
+    auto copy = std::make_unique<ComCriterion>(*this);
+    copy->rename(std::move(name_of));
+    return copy;
+  }
   bool usesSideContacts() const override { return true; }
   /// Statics is asked only where the COM rule fails (check()).
   bool trustsComRulePasses() const override { return true; }
@@ -41,6 +49,8 @@ class ComCriterion : public StabilityCriterion {
                    std::vector<FreezeDecision>* decisions) const override;
 
  protected:
+  /// A copy names the bodies of its own world.
+  void rename(BodyNamer name_of) { name_of_ = std::move(name_of); }
   /// Every failure the COM rule finds is judged by the statics of the
   /// whole component (mode equilibrium); else only failures in components
   /// where loads are shared, whose split the rule can only guess.

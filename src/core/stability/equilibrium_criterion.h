@@ -23,6 +23,11 @@ class EquilibriumCriterion : public ComCriterion {
       : ComCriterion(options, std::move(name_of)) {
     judgeEveryFailureByStatics();
   }
+  std::unique_ptr<StabilityCriterion> clone(BodyNamer name_of) const override {
+    auto copy = std::make_unique<EquilibriumCriterion>(*this);
+    copy->rename(std::move(name_of));
+    return copy;
+  }
 };
 
 }  // namespace brick_stack_sim

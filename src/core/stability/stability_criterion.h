@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "stability/stability_model.h"
@@ -14,6 +15,9 @@ class SupportGraph;
 class StabilityCriterion {
  public:
   virtual ~StabilityCriterion() = default;
+  /// A criterion in this one's exact state (a warm-started solver's basis
+  /// included), naming bodies with `name_of`.
+  virtual std::unique_ptr<StabilityCriterion> clone(BodyNamer name_of) const = 0;
 
   /// Fills what `stability->supports` (its candidate patches) means for
   /// `brick` resting there alone: hulls, COM-above, margin.

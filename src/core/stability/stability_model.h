@@ -2,6 +2,7 @@
 // The interface between the world and a stability model (docs/design.md, "Stability models").
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -216,6 +217,10 @@ class StabilityModel {
   /// last call (any order, maybe repeated): publishers skip the others.
   /// What it says of a mover may change at any step and is not listed.
   virtual std::vector<BodyHandle> takeRedescribed() = 0;
+
+  /// A model in this one's exact state, every later decision the same,
+  /// naming bodies with `name_of` (the copy's world).
+  virtual std::unique_ptr<StabilityModel> clone(BodyNamer name_of) const = 0;
 };
 
 }  // namespace brick_stack_sim

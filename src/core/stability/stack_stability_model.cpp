@@ -81,6 +81,22 @@ StackStabilityModel::StackStabilityModel(const StabilityOptions& options, BodyNa
       criterion_(std::move(criterion)),
       rest_(options) {}
 
+StackStabilityModel::StackStabilityModel(const StackStabilityModel& other, BodyNamer name_of)
+    : options_(other.options_),
+      name_of_(name_of),
+      criterion_(other.criterion_->clone(std::move(name_of))),
+      graph_(other.graph_),
+      rest_(other.rest_),
+      loads_(other.loads_),
+      resting_(other.resting_),
+      steps_(other.steps_),
+      loads_judged_at_(other.loads_judged_at_),
+      unjudged_(other.unjudged_) {}
+
+std::unique_ptr<StabilityModel> StackStabilityModel::clone(BodyNamer name_of) const {
+  return std::unique_ptr<StabilityModel>(new StackStabilityModel(*this, std::move(name_of)));
+}
+
 void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions* decisions) {
   // Bullet has moved them: what was placed at rest is no longer where it was.
   if (input.dt > 0.0) unjudged_.clear();

@@ -35,8 +35,11 @@ class StackStabilityModel : public StabilityModel {
                                         const std::vector<PairContact>& contacts) const override;
   bool describe(BodyHandle brick, BrickStability* stability) const override;
   std::vector<BodyHandle> takeRedescribed() override { return graph_.takeRedescribed(); }
+  std::unique_ptr<StabilityModel> clone(BodyNamer name_of) const override;
 
  private:
+  /// `other`'s exact state, naming bodies with `name_of` (clone()).
+  StackStabilityModel(const StackStabilityModel& other, BodyNamer name_of);
   /// `body` joins `graph` on its supports and side contacts. A frozen brick
   /// resting on it from above (it was slid under a bridge) gains it as a
   /// supporter: that brick's load now has one more way down.

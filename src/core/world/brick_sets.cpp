@@ -24,6 +24,11 @@ void BrickSets::enter(BrickRecord* brick) {
   movers_.push_back(brick);
 }
 
+void BrickSets::adopt(BrickRecord* brick) {
+  if (brick->mode == BrickMode::kDynamic) movers_.push_back(brick);
+  if (brick->mode == BrickMode::kHeld) held_.push_back(brick);
+}
+
 void BrickSets::leaveSet(BrickRecord* brick) {
   if (isFrozen(brick->mode)) {
     dormant_->remove(brick->handle);  // out of the tree and of Bullet's world

@@ -23,6 +23,10 @@ class BrickSets {
   /// A new brick, whose dynamic body the scene has just added to Bullet's
   /// world, joins the movers (the newest serial: last in placement order).
   void enter(BrickRecord* brick);
+  /// A copied brick joins the set of its mode as it is, its body already
+  /// copied (frozen: the dormant colliders copy it themselves); in the
+  /// order the source's sets hold them (movers(), held()).
+  void adopt(BrickRecord* brick);
   /// Moves `brick` to `mode`. A brick entering kDynamic starts at rest and
   /// awake, and its pose becomes its last good one.
   void transfer(BrickRecord* brick, BrickMode mode);

@@ -165,6 +165,26 @@ class BrickWorld {
   /// Events since the last call, oldest first.
   std::vector<SimEvent> takeEvents();
 
+  /// A second world in this one's state (bricks, Bullet bodies bit for
+  /// bit, the model's support graph and rest tracking, clock, counters;
+  /// not the events not yet taken), independent of it from then on. The
+  /// same requests and steps on both give the same bits when
+  /// copiesExactly(); otherwise the copy starts without Bullet's contact
+  /// caches between moving bricks and its motion may differ in the last
+  /// bits, growing as bricks collide.
+  std::unique_ptr<BrickWorld> copy() const;
+  /// No brick moves in Bullet or is held: every brick is frozen (a settled
+  /// structure), so copy() is exact.
+  bool copiesExactly() const;
+  /// A world like this one in stability mode `mode` (its other options,
+  /// types and clock this one's), with every brick placed where it is now
+  /// at its velocities, all at one instant: bricks at rest are judged anew
+  /// by that mode's model as one structure, a held brick is let go. Fails,
+  /// leaving `copy` alone, on an unknown mode or a brick the new world
+  /// refuses (two bricks pressed into each other beyond the overlap
+  /// tolerance).
+  Status copyInMode(const std::string& mode, std::unique_ptr<BrickWorld>* copy) const;
+
   /// Every brick is where its mode says (Bullet's world, the movers, the
   /// frozen colliders); checked after each step in debug builds.
   Status checkInvariants() const;

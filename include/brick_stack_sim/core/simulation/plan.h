@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick.h"
+#include "brick_stack_sim/core/types/sim_event.h"
+#include "brick_stack_sim/core/world/brick_world.h"
+
+namespace brick_stack_sim {
+
+/// One step of a plan, applied `at` seconds after the plan starts. (Not
+/// `PlanStep`: that is PlanStep.msg's type, in this namespace too.)
+struct PlannedStep {
+  enum class Action : unsigned char {
+    kPlace,   ///< addBrick(placement)
+    kRemove,  ///< removeBrick(id)
+    kPush,    ///< applyImpulse(id, impulse, point)
+    kWait,    ///< nothing: the plan runs at least until `at`
+  };
+  Action action = Action::kWait;
+  double at = 0.0;           ///< [s] after the plan starts; steps in non-decreasing order.
+  BrickPlacement placement;  ///< kPlace.
+  std::string id;            ///< kRemove, kPush: the brick.
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< kPush [N s], frame world.
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< kPush: where [m], frame world.
+};
+
+/// A sequence of steps and how long to simulate.
+struct Plan {
+  std::vector<PlannedStep> steps;
+  /// Simulated after the plan starts [s]: at least the last step's `at`.
+  double duration = 0.0;
+  /// A brick has fallen when it ends farther than this from where it was
+  /// when the plan started, or from where the plan placed it [m].
+  double fall_distance = 0.01;
+};
+
+/// The most a plan may simulate [s]: its duration is checked against it.
+constexpr double kMaxPlanDuration = 3600.0;
+
+/// A brick at the end of a plan.
+struct PlanBrickOutcome {
+  BrickSnapshot brick;
+  /// From where it was when the plan started, or where the plan placed it [m].
+  double displacement = 0.0;
+  bool fell = false;  ///< Moved more than Plan::fall_distance, or fell off the table.
+};
+
+/// What a plan did.
+struct PlanOutcome {
+  std::vector<PlanBrickOutcome> bricks;  ///< Every brick at the end, in placement order.
+  std::vector<std::string> lost;         ///< Bricks that left the world box (removed).
+  std::vector<SimEvent> events;          ///< Of the plan, oldest first.
+  std::size_t fallen = 0;                ///< Bricks that fell, the lost ones included.
+  std::size_t moving = 0;                ///< Bricks not frozen at the end.
+  /// Nothing fell and nothing was lost.
+  bool stands = false;
+  std::string verdict;    ///< In words: what fell first, or that it stands.
+  double sim_time = 0.0;  ///< Simulated [s].
+};
+
+/// Whether `plan` can be run as written: finite times in order from 0, a
+/// duration from the last step's time up to kMaxPlanDuration, a positive
+/// fall distance. What each step does is checked when it is applied.
+Status checkPlan(const Plan& plan);
+
+/// Runs `plan` on `world` from its present time: each step when its time
+/// comes (steps at one instant placed together, as addBricks() does), then
+/// on to the duration. A step the world refuses ends the run with an error
+/// naming it; `world` is then part way through the plan, so run plans on a
+/// copy (BrickWorld::copy()). Takes the world's pending events first.
+Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome);
+
+}  // namespace brick_stack_sim
