@@ -56,6 +56,16 @@ Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTyp
   return Status::success();
 }
 
+/// What the command line asks of the run.
+RunOptions runOptionsOf(const RunCommandLine& cli) {
+  RunOptions options;
+  options.world = cli.config.world;
+  options.duration = cli.duration;
+  options.fall_distance = cli.fall_distance;
+  options.statics = cli.statics;
+  return options;
+}
+
 /// The whole run; main() turns an allocation failure into exit 1.
 int run(int argc, char** argv) {
   RunCommandLine cli;
@@ -72,9 +82,7 @@ int run(int argc, char** argv) {
   BrickTypeLibrary types;
   Scene scene;
   RunReport report;
-  RunOptions options;
-  options.world = cli.config.world;
-  options.duration = cli.duration;
+  const RunOptions options = runOptionsOf(cli);
   const DataOptions& data = cli.config.data;
   // A report that cannot be written is found out before a long run, not after.
   Status status = checkWritable(cli.report_path);

@@ -49,8 +49,8 @@ using FlagValues = std::vector<std::pair<std::string, std::string>>;
 Status collectFlags(const std::vector<std::string>& args, RunCommandLine* result, bool* no_sleep,
                     FlagValues* overrides) {
   static const std::set<std::string> kWithValue = {
-      "--config",     "--scene",  "--mode",  "--duration",  "--time-step",
-      "--iterations", "--report", "--types", "--materials", "--scene-dir"};
+      "--config", "--scene", "--mode",      "--duration",  "--time-step",    "--iterations",
+      "--report", "--types", "--materials", "--scene-dir", "--fall-distance"};
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") {
@@ -63,6 +63,10 @@ Status collectFlags(const std::vector<std::string>& args, RunCommandLine* result
     }
     if (flag == "--skip-bad-bricks") {
       result->skip_bad_bricks = true;
+      continue;
+    }
+    if (flag == "--statics") {
+      result->statics = true;
       continue;
     }
     if (flag.rfind("--", 0) != 0) return Status::error("unexpected argument '" + flag + "'");
@@ -102,6 +106,10 @@ Status applyFlags(const FlagValues& overrides, RunCommandLine* result) {
       parsed = parseDouble(flag, value, &world.time_step);
     } else if (flag == "--iterations") {
       parsed = parseInt(flag, value, &world.solver_iterations);
+    } else if (flag == "--fall-distance") {
+      parsed = parseDouble(flag, value, &result->fall_distance);
+      if (parsed && result->fall_distance <= 0.0)
+        parsed = Status::error("--fall-distance must be > 0 m, got '" + value + "'");
     } else if (flag == "--report") {
       result->report_path = value;
     } else if (flag == "--types") {
@@ -139,6 +147,10 @@ std::string runUsage(const std::string& data_dir) {
          "  --skip-bad-bricks   run a scene with bricks that cannot be placed (bad pose,\n"
          "                      outside the world, overlapping...) without them and exit 0;\n"
          "                      by default such a scene is refused (exit 1)\n"
+         "  --fall-distance D   a brick has fallen once its centre of mass moved more than\n"
+         "                      D [m] from where it was placed (default 0.01)\n"
+         "  --statics           add `statics`: whether the bricks placed first stand, by\n"
+         "                      rigid-block statics (mode equilibrium's LP), and their margin\n"
          "  --types URDF        brick types (default: the package's urdf/bricks.urdf)\n"
          "  --materials YAML    friction and restitution per type (default: config/bricks.yaml)\n"
          "  --scene-dir DIR     where scene names are looked up (repeatable; default scenes/)\n"

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/simulation/simulation_config.h"
 #include "brick_stack_sim/core/status.h"
 
@@ -20,6 +21,10 @@ struct RunCommandLine {
   /// Run a scene with bricks that cannot be placed without them (and exit 0)
   /// instead of refusing it.
   bool skip_bad_bricks = false;
+  /// --statics: judge the scene's first structure by statics (the report's `statics`).
+  bool statics = false;
+  /// --fall-distance: a brick has fallen once its centre of mass moved farther [m].
+  double fall_distance = kDefaultFallDistance;
   bool help = false;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <map>
 
 #include "brick_stack_sim/core/simulation/simulation.h"
 #include "io/json_writer.h"
@@ -23,6 +25,85 @@ BrickOutcome outcomeOf(const BrickSnapshot& brick) {
   return outcome;
 }
 
+/// Finds the bricks that fall during a run (docs/design.md, "The batch
+/// runner"). Every brick each step would cost a large scene more than its
+/// physics, so it looks every kFallCheckInterval, and only at the bricks
+/// that may have moved since its last look: those not frozen, and frozen
+/// ones that froze or that the model moved since (snapshotChangedSince).
+/// A frozen brick does not move.
+class FallWatch {
+ public:
+  FallWatch(const BrickWorld& world, double distance) : world_(world), distance_(distance) {}
+
+  void look() {
+    for (const BrickSnapshot& brick : world_.snapshotChangedSince(revision_)) {
+      if (fell_at_.count(brick.id)) continue;
+      if (brick.fell_off || comShift(brick) > distance_) record(brick.id, world_.time());
+    }
+    revision_ = world_.revision();
+  }
+
+  /// A brick that left the world box falls at its lost event, unless it was
+  /// seen fallen before.
+  void lost(const std::vector<SimEvent>& events) {
+    for (const SimEvent& event : events)
+      if (event.kind == SimEventKind::kLost && !fell_at_.count(event.brick_id))
+        record(event.brick_id, event.time);
+    std::stable_sort(falls_.begin(), falls_.end(),
+                     [](const BrickFall& a, const BrickFall& b) { return a.t < b.t; });
+  }
+
+  std::optional<double> fellAt(const std::string& id) const {
+    const auto found = fell_at_.find(id);
+    if (found == fell_at_.end()) return std::nullopt;
+    return found->second;
+  }
+  std::vector<BrickFall> falls() const { return falls_; }
+
+ private:
+  /// How far its centre of mass is from where it was placed [m].
+  double comShift(const BrickSnapshot& brick) const {
+    const BrickType* type = world_.types().find(brick.type);
+    const Eigen::Vector3d com =
+        type ? Eigen::Vector3d(type->mass_frame.translation()) : Eigen::Vector3d::Zero();
+    return (brick.pose * com - brick.placed_pose * com).norm();
+  }
+  void record(const std::string& id, double t) {
+    fell_at_[id] = t;
+    falls_.push_back(BrickFall{id, t});
+  }
+
+  const BrickWorld& world_;
+  double distance_;
+  std::uint64_t revision_ = 0;
+  std::map<std::string, double> fell_at_;
+  std::vector<BrickFall> falls_;
+};
+
+/// The bricks `scene` places at its first instant, at rest where placed,
+/// lowest first (by the bottom of their bounds). A brick placed at rest
+/// before the brick it rests on would wait, unjudged, for Bullet to bring
+/// it to rest there; bottom up, each finds what carries it already placed.
+std::vector<BrickPlacement> firstStructure(const Scene& scene, const BrickTypeLibrary& types) {
+  std::vector<std::pair<double, BrickPlacement>> first;
+  for (const ScheduledBrick& brick : scene.bricks) {
+    if (brick.at != scene.bricks.front().at) break;  // sorted by `at`
+    BrickPlacement placement = brick.placement;
+    placement.linear_velocity.setZero();
+    placement.angular_velocity.setZero();
+    const BrickType* type =
+        types.find(placement.type.empty() ? types.defaultType() : placement.type);
+    const double bottom = type && type->solid ? bounds(type->placed(placement.pose)).min().z()
+                                              : placement.pose.translation().z();
+    first.emplace_back(bottom, std::move(placement));
+  }
+  std::stable_sort(first.begin(), first.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<BrickPlacement> placements;
+  for (auto& entry : first) placements.push_back(std::move(entry.second));
+  return placements;
+}
+
 }  // namespace
 
 double RunReport::maxDisplacement() const {
@@ -31,11 +112,58 @@ double RunReport::maxDisplacement() const {
   return largest;
 }
 
+std::size_t RunReport::standing() const {
+  return static_cast<std::size_t>(std::count_if(bricks.begin(), bricks.end(),
+                                                [](const BrickOutcome& b) { return !b.fell_at; }));
+}
+
+Status judgeInitialStructure(const Scene& scene, const BrickTypeLibrary& types,
+                             const WorldOptions& world, StaticsLabel* label) {
+  // Why "every brick frozen" is the LP of the whole structure. Bricks
+  // placed at one instant are judged together (BrickWorld::addBricks). A
+  // brick freezes alone when the COM rule holds it on what froze before it
+  // (margin above stability/min_margin); one that cannot waits, and the
+  // bricks waiting that touch are admitted as a group by the LP with the
+  // frozen bricks under them held fixed (StackStabilityModel::
+  // admitGroupAtRest, ComCriterion::admitsGroup), which is feasible
+  // whenever the LP with those bricks free is (fixing a body only drops its
+  // equations). Once all are in, settle() checks each component of the
+  // support graph (bricks that touch, side contacts included, are linked):
+  // where the COM rule finds a brick that cannot stay, mode equilibrium
+  // solves the LP of the whole component, every brick free, and wakes the
+  // collapse mechanism its dual names when it has no solution; where the
+  // COM rule holds every brick, its vertical forces inside the patches are
+  // a solution of that LP. So every brick stays frozen exactly when the LP
+  // of the whole structure on the fixed table is feasible, up to a lone
+  // brick within min_margin (1 micrometre) of its edge, which the COM rule
+  // does not freeze and no group takes in, and to the contacts that
+  // geometry finds (docs/design.md, "The stability layer").
+  WorldOptions options = sceneWorldOptions(scene, world);
+  options.stability.mode = "equilibrium";
+  BrickTypeLibrary scene_types = types;
+  if (Status merged = mergeSceneTypes(scene, &scene_types); !merged) return merged;
+  std::unique_ptr<BrickWorld> judge;
+  if (Status created = BrickWorld::create(options, scene_types, &judge); !created) return created;
+  judge->addBricks(firstStructure(scene, scene_types));
+  StaticsLabel result;
+  result.stands = true;
+  result.margin = std::numeric_limits<double>::infinity();
+  for (const BrickSnapshot& brick : judge->snapshot()) {
+    ++result.bricks;
+    result.stands &= brick.state == BrickState::kStable || brick.state == BrickState::kLeaning;
+    result.margin = std::min(result.margin, brick.margin);
+  }
+  // A woken brick reports no margin (0); one that never froze, its own.
+  if (result.bricks == 0) result.margin = 0.0;
+  if (!result.stands) result.margin = std::min(result.margin, 0.0);
+  *label = result;
+  return Status::success();
+}
+
 Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
                           const WorldOptions& world, std::vector<BadSceneBrick>* bad) {
   bad->clear();
-  WorldOptions options = world;
-  if (scene.table) options.table = *scene.table;
+  const WorldOptions options = sceneWorldOptions(scene, world);
   BrickTypeLibrary scene_types = types;
   if (Status merged = mergeSceneTypes(scene, &scene_types); !merged) return merged;
   std::unique_ptr<BrickWorld> empty;
@@ -53,18 +181,33 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   const double duration = options.duration.value_or(last_placement + kDefaultSettleTime);
   if (!std::isfinite(duration) || duration < 0.0)
     return Status::error("duration must be finite and >= 0 s");
+  if (!std::isfinite(options.fall_distance) || options.fall_distance <= 0.0)
+    return Status::error("fall distance must be finite and > 0 m");
+  RunReport result;
+  if (options.statics) {
+    StaticsLabel label;
+    if (Status judged = judgeInitialStructure(scene, types, options.world, &label); !judged)
+      return judged;
+    result.statics = label;
+  }
   std::unique_ptr<Simulation> simulation;
   if (Status created = Simulation::create(options.world, types, &simulation); !created)
     return created;
   const auto wall_start = std::chrono::steady_clock::now();
   if (Status reset = simulation->reset(scene); !reset) return reset;
   const BrickWorld& world = simulation->world();
-  const auto steps = static_cast<std::uint64_t>(std::llround(duration / world.options().time_step));
+  const double dt = world.options().time_step;
+  const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
+  // Looks at most kFallCheckInterval apart (1e-9: ten 1 ms steps are 10 ms).
+  const auto look_every = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(std::floor(kFallCheckInterval / dt + 1e-9)));
+  FallWatch watch(world, options.fall_distance);
   for (std::uint64_t i = 0; i < steps; ++i) {
     simulation->step();
     if (options.observer) options.observer(world);
+    if ((i + 1) % look_every == 0) watch.look();
   }
-  RunReport result;
+  watch.look();
   result.scene = scene.name;
   result.world = world.options();
   result.wall_time =
@@ -73,8 +216,14 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   result.cost = world.cost();
   result.refused = simulation->takeRefused();
   result.scheduled = scene.bricks.size() - simulation->player().pending();
-  for (const BrickSnapshot& brick : world.snapshot()) result.bricks.push_back(outcomeOf(brick));
   result.events = simulation->takeEvents();
+  watch.lost(result.events);
+  result.fall_distance = options.fall_distance;
+  result.falls = watch.falls();
+  for (const BrickSnapshot& brick : world.snapshot()) {
+    result.bricks.push_back(outcomeOf(brick));
+    result.bricks.back().fell_at = watch.fellAt(brick.id);
+  }
   *report = std::move(result);
   return Status::success();
 }
@@ -100,6 +249,26 @@ void writeRunSummary(const RunReport& r, JsonWriter& json) {
   json.key("scheduled").value(static_cast<unsigned long long>(r.scheduled));
   json.key("lost").value(static_cast<unsigned long long>(r.lost()));
   json.key("missing").value(static_cast<unsigned long long>(r.missing()));
+}
+
+/// Which bricks fell and which stand, and the statics label when asked for.
+void writeFalls(const RunReport& r, JsonWriter& json) {
+  json.key("fall_distance").value(r.fall_distance);
+  json.key("fallen").value(static_cast<unsigned long long>(r.falls.size()));
+  json.key("standing").value(static_cast<unsigned long long>(r.standing()));
+  json.key("first_fall").value(r.falls.empty() ? std::string() : r.falls.front().id);
+  json.key("first_fall_t");
+  if (r.falls.empty()) {
+    json.null();
+  } else {
+    json.value(r.falls.front().t);
+  }
+  if (!r.statics) return;
+  json.key("statics").beginObject();
+  json.key("stands").value(r.statics->stands);
+  json.key("margin").value(r.statics->margin);
+  json.key("bricks").value(static_cast<unsigned long long>(r.statics->bricks));
+  json.endObject();
 }
 
 /// What the run cost: counts that are reproducible, then the stages' wall
@@ -135,6 +304,12 @@ void writeBrickOutcomes(const RunReport& r, JsonWriter& json) {
     json.key("fell_off").value(b.fell_off);
     json.key("displacement").value(outcome.displacement);
     json.key("rotation").value(outcome.rotation);
+    json.key("fell_at");
+    if (outcome.fell_at) {
+      json.value(*outcome.fell_at);
+    } else {
+      json.null();
+    }
     json.endObject();
   }
   json.endArray();
@@ -178,6 +353,7 @@ std::string toJson(const RunReport& r) {
   JsonWriter json;
   json.beginObject();
   writeRunSummary(r, json);
+  writeFalls(r, json);
   writeRunCost(r, json);
   json.key("max_displacement").value(r.maxDisplacement());
   writeBrickOutcomes(r, json);

@@ -107,6 +107,12 @@ JsonWriter& JsonWriter::value(bool flag) {
   return *this;
 }
 
+JsonWriter& JsonWriter::null() {
+  separate();
+  out_ += "null";
+  return *this;
+}
+
 JsonWriter& JsonWriter::numbers(const double* data, int count) {
   beginArray();
   for (int i = 0; i < count; ++i) value(data[i]);

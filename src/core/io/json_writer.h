@@ -20,6 +20,7 @@ class JsonWriter {
   JsonWriter& value(double number);
   JsonWriter& value(unsigned long long number);
   JsonWriter& value(bool flag);
+  JsonWriter& null();  ///< JSON's null: a value that is not there (a time that never came).
   JsonWriter& numbers(const double* data, int count);
   const std::string& str() const { return out_; }
 

@@ -78,6 +78,60 @@ ScheduledBrick readBrick(const YAML::Node& node, std::size_t index) {
   return brick;
 }
 
+/// The scene's `friction` (docs/design.md, "Simulation and scenes").
+double readFriction(const YAML::Node& root) {
+  const double friction = readNumber(root["friction"], "friction");
+  if (friction < 0.0)
+    fail("friction", formatNumber(friction) + ": must be >= 0 (a Coulomb coefficient)");
+  return friction;
+}
+
+PoseNoise readPoseNoise(const YAML::Node& node) {
+  const std::string where = "pose_noise";
+  requireKnownKeys(node, where, {"position", "yaw", "seed"});
+  PoseNoise noise;
+  noise.position = readNumber(node, "position", where, noise.position);
+  if (noise.position < 0.0 || noise.position > kMaxPoseNoise)
+    fail(where + ".position",
+         formatNumber(noise.position) + ": must be in [0, " + formatNumber(kMaxPoseNoise) + "] m");
+  // Beyond pi the draws would cover some turns twice.
+  noise.yaw = readNumber(node, "yaw", where, noise.yaw);
+  if (noise.yaw < 0.0 || noise.yaw > M_PI)
+    fail(where + ".yaw", formatNumber(noise.yaw) + ": must be in [0, pi] rad");
+  noise.seed = scene_yaml::readSeed(node, "seed", where, noise.seed);
+  return noise;
+}
+
+/// Offsets and turns every brick, in order; three draws per brick (x, y,
+/// yaw) whatever the bounds, so that a bound of 0 changes nothing else and
+/// leaves the poses' bits as they were.
+void applyPoseNoise(const PoseNoise& noise, std::vector<ScheduledBrick>* bricks) {
+  std::mt19937_64 random(noise.seed);
+  auto within = [&random](double bound) { return bound * (2.0 * unitDraw(random) - 1.0); };
+  for (ScheduledBrick& brick : *bricks) {
+    const double dx = within(noise.position), dy = within(noise.position), yaw = within(noise.yaw);
+    Eigen::Isometry3d& pose = brick.placement.pose;
+    if (noise.position > 0.0) pose.translation().head<2>() += Eigen::Vector2d(dx, dy);
+    if (noise.yaw > 0.0)
+      pose.linear() =
+          Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * pose.linear();
+  }
+}
+
+/// What a scene says besides its types and bricks: `expect`, `table`,
+/// `friction` and `pose_noise`.
+void readSceneSettings(const YAML::Node& root, Scene* scene) {
+  const std::string expect = readString(root, "expect", "scene", "stands");
+  if (expect == "collapses") {
+    scene->expect = ExpectedOutcome::kCollapses;
+  } else if (expect != "stands") {
+    fail("expect", "'" + expect + "': expected 'stands' or 'collapses'");
+  }
+  if (root["table"]) scene->table = readTable(root["table"]);
+  if (root["friction"]) scene->friction = readFriction(root);
+  if (root["pose_noise"]) scene->pose_noise = readPoseNoise(root["pose_noise"]);
+}
+
 struct GeneratorEntry {
   const char* name;
   GeneratorReader read;
@@ -97,6 +151,7 @@ constexpr GeneratorEntry kGenerators[] = {
     {"kapla_record", &readKaplaRecordGenerator, &countKaplaRecordGenerator},
     {"arch", &readArchGenerator, &countArchGenerator},
     {"column", &readColumnGenerator, &countColumnGenerator},
+    {"block_tower", &readBlockTowerGenerator, &countBlockTowerGenerator},
 };
 
 /// The generator `node` names; fails on a node without a known name.
@@ -218,7 +273,22 @@ Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types) {
   for (const BrickType& type : scene.types) {
     if (Status added = types->add(type); !added) return added;
   }
+  if (!scene.friction) return Status::success();
+  // Every type, the library's too: a brick placed later by name (a node's
+  // ~place_brick) meets the scene's friction as well.
+  for (const std::string& name : types->names()) {
+    BrickType type = *types->find(name);
+    type.friction = *scene.friction;
+    if (Status added = types->add(std::move(type)); !added) return added;
+  }
   return Status::success();
+}
+
+WorldOptions sceneWorldOptions(const Scene& scene, const WorldOptions& options) {
+  WorldOptions result = options;
+  if (scene.table) result.table = *scene.table;
+  if (scene.friction) result.table.friction = *scene.friction;
+  return result;
 }
 
 Status parseScene(const std::string& yaml_text, const std::string& name,
@@ -228,15 +298,11 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
     const YAML::Node root = YAML::Load(yaml_text);
     if (!root.IsMap())
       return Status::error("scene " + quotedPath(name) + ": expected a map at the top");
-    requireKnownKeys(root, "scene", {"name", "table", "types", "generator", "bricks", "expect"});
+    requireKnownKeys(
+        root, "scene",
+        {"name", "table", "types", "generator", "bricks", "expect", "friction", "pose_noise"});
     result.name = readString(root, "name", "scene", name);
-    const std::string expect = readString(root, "expect", "scene", "stands");
-    if (expect == "collapses") {
-      result.expect = ExpectedOutcome::kCollapses;
-    } else if (expect != "stands") {
-      fail("expect", "'" + expect + "': expected 'stands' or 'collapses'");
-    }
-    if (root["table"]) result.table = readTable(root["table"]);
+    readSceneSettings(root, &result);
     if (root["types"]) {
       if (!root["types"].IsMap()) fail("types", "expected a map of name: {size, mass, ...}");
       for (const auto& entry : root["types"])
@@ -275,6 +341,7 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
   }
   std::stable_sort(result.bricks.begin(), result.bricks.end(),
                    [](const ScheduledBrick& a, const ScheduledBrick& b) { return a.at < b.at; });
+  if (result.pose_noise) applyPoseNoise(*result.pose_noise, &result.bricks);
   *scene = std::move(result);
   return Status::success();
 }

@@ -47,6 +47,19 @@ int readInt(const YAML::Node& map, const char* key, const std::string& where, in
   }
 }
 
+std::uint64_t readSeed(const YAML::Node& map, const char* key, const std::string& where,
+                       std::uint64_t fallback) {
+  if (!map[key]) return fallback;
+  long long seed = -1;
+  try {
+    seed = map[key].as<long long>();
+  } catch (const YAML::Exception&) {
+    fail(where + "." + key, "expected an integer >= 0");
+  }
+  if (seed < 0) fail(where + "." + key, "must be >= 0");
+  return static_cast<std::uint64_t>(seed);
+}
+
 std::string readString(const YAML::Node& map, const char* key, const std::string& where,
                        const std::string& fallback) {
   if (!map[key]) return fallback;

@@ -3,6 +3,7 @@
 // ("bricks[2].position[1]: must be finite"). Used inside the scene parser
 // only: a SceneError thrown here becomes a Status at parseScene's boundary.
 
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -27,6 +28,9 @@ double readNumber(const YAML::Node& node, const std::string& where);
 double readNumber(const YAML::Node& map, const char* key, const std::string& where,
                   double fallback);
 int readInt(const YAML::Node& map, const char* key, const std::string& where, int fallback);
+/// An integer in [0, 2^63 - 1]: the seed of a random generator.
+std::uint64_t readSeed(const YAML::Node& map, const char* key, const std::string& where,
+                       std::uint64_t fallback);
 std::string readString(const YAML::Node& map, const char* key, const std::string& where,
                        const std::string& fallback = "");
 

@@ -29,8 +29,8 @@ Status Simulation::prepareReset(const Scene& scene, double start_time,
   // Everything that can fail happens before the current world is touched. A
   // fresh Bullet world keeps no pair cache or warm-starting data, so a scene
   // after a reset runs exactly as in a new simulation.
-  WorldOptions options = options_;
-  if (scene.table) options.table = *scene.table;
+  // The scene's table and its `friction` (which mergeSceneTypes gives the types).
+  const WorldOptions options = sceneWorldOptions(scene, options_);
   // A scene is refused whole rather than brick by brick at its times: a
   // brick outside the world box is a typo in the file, not an event.
   for (const ScheduledBrick& brick : scene.bricks) {

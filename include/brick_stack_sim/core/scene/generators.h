@@ -175,6 +175,24 @@ struct ColumnParams {
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< [m]
 };
 
+/// Parameters of the `block_tower` generator: one brick per level, all of
+/// one box type lying as its frame says, stacked along z from the table top,
+/// each brick offset horizontally from the one below by a seeded random
+/// vector, all offsets scaled by one factor so that the most critical level
+/// has `criticality`. The criticality of level k (brick k-1 carrying bricks
+/// k..n-1) is the larger over x and y of |that axis' coordinate of the
+/// centre of mass of bricks k..n-1 minus brick k-1's centre| over brick
+/// k-1's half extent along the axis. Statics: it stands exactly when
+/// `criticality` < 1.
+struct BlockTowerParams {
+  int bricks = 5;  ///< Levels, 1 to 50.
+  std::string type = "kapla";
+  double criticality = 0.9;  ///< Of the most critical level (> 0) [-]; one brick has no level.
+  std::uint64_t seed = 0;    ///< Of the offsets' directions and relative sizes.
+  double start = 0.0;        ///< Every brick is placed at rest then [s].
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< The lowest brick's centre [m].
+};
+
 /// Appends a tower: layers alternate between bricks along x and along y, each
 /// layer resting across the ends of the one below.
 Status generateTower(const TowerParams& params, const BrickTypeLibrary& types,
@@ -219,6 +237,12 @@ Status generateArch(const ArchParams& params, std::vector<BrickType>* types,
 Status generateColumn(const ColumnParams& params, const BrickTypeLibrary& types,
                       std::vector<ScheduledBrick>* bricks);
 
+/// Appends a block tower; refuses a type that is not a box, and a
+/// criticality that the type's own centre of mass, off its box's centre,
+/// already passes.
+Status generateBlockTower(const BlockTowerParams& params, const BrickTypeLibrary& types,
+                          std::vector<ScheduledBrick>* bricks);
+
 /// Appends a pile drop.
 Status generatePile(const PileParams& params, const BrickTypeLibrary& types,
                     std::vector<ScheduledBrick>* bricks);
@@ -239,5 +263,6 @@ std::int64_t brickCount(const ImpactParams& params);
 std::int64_t brickCount(const KaplaRecordParams& params);
 std::int64_t brickCount(const ArchParams& params);
 std::int64_t brickCount(const ColumnParams& params);
+std::int64_t brickCount(const BlockTowerParams& params);
 
 }  // namespace brick_stack_sim

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,21 @@ enum class ExpectedOutcome {
   kCollapses,  ///< Some brick falls: a demonstration of a stability limit.
 };
 
+/// A scene's `pose_noise`: each brick's x and y offset by independent
+/// uniform draws in [-position, position] and its orientation turned about
+/// world z by a uniform draw in [-yaw, yaw], in the order of Scene::bricks,
+/// from std::mt19937_64 seeded with `seed` (docs/design.md, "Simulation and
+/// scenes").
+struct PoseNoise {
+  double position = 0.0;   ///< Bound of each horizontal offset [m], in [0, kMaxPoseNoise].
+  double yaw = 0.0;        ///< Bound of the turn about world z [rad], in [0, pi].
+  std::uint64_t seed = 0;  ///< Of the generator of the draws.
+};
+
+/// Largest `pose_noise.position` [m]: more is no longer noise on a structure
+/// of bricks a few centimetres wide, but a typo.
+constexpr double kMaxPoseNoise = 0.1;
+
 /// A scene (docs/design.md, "Simulation and scenes"): an optional table
 /// override, optional extra brick types, and bricks with placement times,
 /// sorted by `at` (stable). `generator` may be one generator or a list of them.
@@ -34,6 +50,13 @@ struct Scene {
   std::vector<BrickType> types;
   std::vector<ScheduledBrick> bricks;
   ExpectedOutcome expect = ExpectedOutcome::kStands;  ///< YAML `expect: stands | collapses`.
+  /// YAML `friction`: the Coulomb coefficient [-] of every brick type and of
+  /// the table (and floor) in this scene, so that every contact has it
+  /// (Bullet's geometric mean of two equal coefficients is that coefficient).
+  /// Applied by mergeSceneTypes() and sceneWorldOptions().
+  std::optional<double> friction;
+  /// YAML `pose_noise`, as read; parseScene() has already applied it to `bricks`.
+  std::optional<PoseNoise> pose_noise;
 };
 
 /// Latest placement time a scene may give [s]: 11.6 days of sim time, more
@@ -70,8 +93,14 @@ Status parseScene(const std::string& yaml_text, const std::string& name,
 Status loadScene(const std::string& name_or_path, const std::vector<std::string>& scene_dirs,
                  const BrickTypeLibrary& types, Scene* scene, const SceneLimits& limits = {});
 
-/// Adds the scene's own types to `types` (the scene's win on a name clash).
+/// Adds the scene's own types to `types` (the scene's win on a name clash);
+/// with the scene's `friction`, every type of `types` then has that friction.
 Status mergeSceneTypes(const Scene& scene, BrickTypeLibrary* types);
+
+/// The world options `scene` runs in: `options` with the scene's table when
+/// it has one, and the scene's `friction` as the table's (the floor takes the
+/// table's).
+WorldOptions sceneWorldOptions(const Scene& scene, const WorldOptions& options);
 
 /// A scene of `types` alone and no bricks, as YAML that parseScene() reads
 /// back into the same shapes, masses and materials (inertia from the solid):

@@ -3,6 +3,7 @@
 // generator makes, and the brick type they place.
 
 #include <cstdint>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -58,6 +59,8 @@ void readArchGenerator(const YAML::Node& node, const std::string& where,
                        const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 void readColumnGenerator(const YAML::Node& node, const std::string& where,
                          const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
+void readBlockTowerGenerator(const YAML::Node& node, const std::string& where,
+                             const GeneratorContext& context, std::vector<ScheduledBrick>* bricks);
 
 std::int64_t countTowerGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countHarmonicGenerator(const YAML::Node& node, const std::string& where);
@@ -70,6 +73,7 @@ std::int64_t countKaplaRecordGenerator(const YAML::Node& node, const std::string
 std::int64_t countPileGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countArchGenerator(const YAML::Node& node, const std::string& where);
 std::int64_t countColumnGenerator(const YAML::Node& node, const std::string& where);
+std::int64_t countBlockTowerGenerator(const YAML::Node& node, const std::string& where);
 
 /// A brick count computed in floating point, as brickCount() says it:
 /// negative as 0, beyond kMaxCountedBricks as that.
@@ -86,6 +90,14 @@ Status checkStartAndType(const char* generator, double start, double interval,
 /// named b<n> after its place in `bricks`; returns it for a rotation.
 ScheduledBrick& appendBrick(const BrickType& type, const Eigen::Vector3d& position, double at,
                             std::vector<ScheduledBrick>* bricks);
+
+/// A draw in [0, 1) from the generator's raw 64 bits, their top 53 as a
+/// double's mantissa: std::uniform_real_distribution is not specified alike
+/// in every standard library, and a scene must be the same scene on every
+/// machine.
+inline double unitDraw(std::mt19937_64& random) {
+  return static_cast<double>(random() >> 11) * 0x1.0p-53;
+}
 
 /// ROS convention (REP 103): fixed-axis roll about x, then pitch about y, then yaw about z.
 Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy);
