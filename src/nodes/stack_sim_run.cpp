@@ -62,6 +62,7 @@ RunOptions runOptionsOf(const RunCommandLine& cli) {
   options.world = cli.config.world;
   options.duration = cli.duration;
   options.fall_distance = cli.fall_distance;
+  options.fall_angle = cli.fall_angle;
   options.statics = cli.statics;
   return options;
 }

@@ -49,8 +49,8 @@ using FlagValues = std::vector<std::pair<std::string, std::string>>;
 Status collectFlags(const std::vector<std::string>& args, RunCommandLine* result, bool* no_sleep,
                     FlagValues* overrides) {
   static const std::set<std::string> kWithValue = {
-      "--config", "--scene", "--mode",      "--duration",  "--time-step",    "--iterations",
-      "--report", "--types", "--materials", "--scene-dir", "--fall-distance"};
+      "--config", "--scene", "--mode",      "--duration",  "--time-step",     "--iterations",
+      "--report", "--types", "--materials", "--scene-dir", "--fall-distance", "--fall-angle"};
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") {
@@ -106,6 +106,10 @@ Status applyFlags(const FlagValues& overrides, RunCommandLine* result) {
       parsed = parseDouble(flag, value, &world.time_step);
     } else if (flag == "--iterations") {
       parsed = parseInt(flag, value, &world.solver_iterations);
+    } else if (flag == "--fall-angle") {
+      parsed = parseDouble(flag, value, &result->fall_angle);
+      if (parsed && result->fall_angle <= 0.0)
+        parsed = Status::error("--fall-angle must be > 0 rad, got '" + value + "'");
     } else if (flag == "--fall-distance") {
       parsed = parseDouble(flag, value, &result->fall_distance);
       if (parsed && result->fall_distance <= 0.0)
@@ -149,6 +153,7 @@ std::string runUsage(const std::string& data_dir) {
          "                      by default such a scene is refused (exit 1)\n"
          "  --fall-distance D   a brick has fallen once its centre of mass moved more than\n"
          "                      D [m] from where it was placed (default 0.01)\n"
+         "  --fall-angle A      or once it turned more than A [rad] (default 0.1)\n"
          "  --statics           add `statics`: whether the bricks placed first stand, by\n"
          "                      rigid-block statics (mode equilibrium's LP), and their margin\n"
          "  --types URDF        brick types (default: the package's urdf/bricks.urdf)\n"

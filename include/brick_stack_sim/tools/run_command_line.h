@@ -25,6 +25,8 @@ struct RunCommandLine {
   bool statics = false;
   /// --fall-distance: a brick has fallen once its centre of mass moved farther [m].
   double fall_distance = kDefaultFallDistance;
+  /// --fall-angle: or once it turned farther [rad].
+  double fall_angle = kDefaultFallAngle;
   bool help = false;
 };
 

@@ -33,12 +33,14 @@ BrickOutcome outcomeOf(const BrickSnapshot& brick) {
 /// A frozen brick does not move.
 class FallWatch {
  public:
-  FallWatch(const BrickWorld& world, double distance) : world_(world), distance_(distance) {}
+  FallWatch(const BrickWorld& world, double distance, double angle)
+      : world_(world), distance_(distance), angle_(angle) {}
 
   void look() {
     for (const BrickSnapshot& brick : world_.snapshotChangedSince(revision_)) {
       if (fell_at_.count(brick.id)) continue;
-      if (brick.fell_off || comShift(brick) > distance_) record(brick.id, world_.time());
+      if (brick.fell_off || comShift(brick) > distance_ || turn(brick) > angle_)
+        record(brick.id, world_.time());
     }
     revision_ = world_.revision();
   }
@@ -68,6 +70,10 @@ class FallWatch {
         type ? Eigen::Vector3d(type->mass_frame.translation()) : Eigen::Vector3d::Zero();
     return (brick.pose * com - brick.placed_pose * com).norm();
   }
+  /// How far it has turned from how it was placed [rad].
+  static double turn(const BrickSnapshot& brick) {
+    return Eigen::AngleAxisd(brick.placed_pose.linear().transpose() * brick.pose.linear()).angle();
+  }
   void record(const std::string& id, double t) {
     fell_at_[id] = t;
     falls_.push_back(BrickFall{id, t});
@@ -75,6 +81,7 @@ class FallWatch {
 
   const BrickWorld& world_;
   double distance_;
+  double angle_;
   std::uint64_t revision_ = 0;
   std::map<std::string, double> fell_at_;
   std::vector<BrickFall> falls_;
@@ -183,6 +190,8 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
     return Status::error("duration must be finite and >= 0 s");
   if (!std::isfinite(options.fall_distance) || options.fall_distance <= 0.0)
     return Status::error("fall distance must be finite and > 0 m");
+  if (!std::isfinite(options.fall_angle) || options.fall_angle <= 0.0)
+    return Status::error("fall angle must be finite and > 0 rad");
   RunReport result;
   if (options.statics) {
     StaticsLabel label;
@@ -201,7 +210,7 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   // Looks at most kFallCheckInterval apart (1e-9: ten 1 ms steps are 10 ms).
   const auto look_every = std::max<std::uint64_t>(
       1, static_cast<std::uint64_t>(std::floor(kFallCheckInterval / dt + 1e-9)));
-  FallWatch watch(world, options.fall_distance);
+  FallWatch watch(world, options.fall_distance, options.fall_angle);
   for (std::uint64_t i = 0; i < steps; ++i) {
     simulation->step();
     if (options.observer) options.observer(world);
@@ -219,6 +228,7 @@ Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOpti
   result.events = simulation->takeEvents();
   watch.lost(result.events);
   result.fall_distance = options.fall_distance;
+  result.fall_angle = options.fall_angle;
   result.falls = watch.falls();
   for (const BrickSnapshot& brick : world.snapshot()) {
     result.bricks.push_back(outcomeOf(brick));
@@ -254,6 +264,7 @@ void writeRunSummary(const RunReport& r, JsonWriter& json) {
 /// Which bricks fell and which stand, and the statics label when asked for.
 void writeFalls(const RunReport& r, JsonWriter& json) {
   json.key("fall_distance").value(r.fall_distance);
+  json.key("fall_angle").value(r.fall_angle);
   json.key("fallen").value(static_cast<unsigned long long>(r.falls.size()));
   json.key("standing").value(static_cast<unsigned long long>(r.standing()));
   json.key("first_fall").value(r.falls.empty() ? std::string() : r.falls.front().id);

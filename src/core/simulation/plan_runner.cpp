@@ -42,7 +42,7 @@ std::uint64_t stepsUntil(double at, double dt) {
 
 /// The bricks at the end of a plan against where they started, and the
 /// verdict, into `result` (its events already taken).
-void summarize(const Plan& plan, const std::map<std::string, Eigen::Vector3d>& start,
+void summarize(const Plan& plan, const std::map<std::string, Eigen::Isometry3d>& start,
                const BrickWorld& world, PlanOutcome* outcome) {
   PlanOutcome& result = *outcome;
   std::string first_fallen;
@@ -53,8 +53,11 @@ void summarize(const Plan& plan, const std::map<std::string, Eigen::Vector3d>& s
   }
   for (BrickSnapshot& brick : world.snapshot()) {
     PlanBrickOutcome outcome_of;
-    outcome_of.displacement = (brick.pose.translation() - start.at(brick.id)).norm();
-    outcome_of.fell = brick.fell_off || outcome_of.displacement > plan.fall_distance;
+    const Eigen::Isometry3d& from = start.at(brick.id);
+    outcome_of.displacement = (brick.pose.translation() - from.translation()).norm();
+    const double turn = Eigen::AngleAxisd(from.linear().transpose() * brick.pose.linear()).angle();
+    outcome_of.fell =
+        brick.fell_off || outcome_of.displacement > plan.fall_distance || turn > plan.fall_angle;
     if (outcome_of.fell && first_fallen.empty()) first_fallen = brick.id;
     result.fallen += outcome_of.fell;
     result.moving += brick.state == BrickState::kDynamic;
@@ -66,6 +69,7 @@ void summarize(const Plan& plan, const std::map<std::string, Eigen::Vector3d>& s
   result.verdict =
       result.stands
           ? "stands: no brick moved more than " + millimetres(plan.fall_distance) +
+                " or turned more than " + formatNumber(plan.fall_angle) + " rad" +
                 (result.moving ? ", " + std::to_string(result.moving) + " still moving" : "")
           : std::to_string(result.fallen) + " brick(s) fell, among them " + first_fallen;
 }
@@ -92,6 +96,8 @@ Status checkPlan(const Plan& plan) {
                          seconds(last) + ") and at most " + seconds(kMaxPlanDuration));
   if (!std::isfinite(plan.fall_distance) || !(plan.fall_distance > 0.0))
     return Status::error("fall distance must be finite and > 0 m");
+  if (!std::isfinite(plan.fall_angle) || !(plan.fall_angle > 0.0))
+    return Status::error("fall angle must be finite and > 0 rad");
   return Status::success();
 }
 
@@ -100,8 +106,8 @@ Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome) {
   world->takeEvents();
   const double dt = world->options().time_step;
   // Where each brick started: a brick placed by the plan starts where placed.
-  std::map<std::string, Eigen::Vector3d> start;
-  for (const BrickSnapshot& brick : world->snapshot()) start[brick.id] = brick.pose.translation();
+  std::map<std::string, Eigen::Isometry3d> start;
+  for (const BrickSnapshot& brick : world->snapshot()) start[brick.id] = brick.pose;
   PlanOutcome result;
   std::uint64_t done = 0;
   for (std::size_t i = 0; i < plan.steps.size(); ++i) {
@@ -116,7 +122,7 @@ Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome) {
     switch (step.action) {
       case PlannedStep::Action::kPlace:
         applied = world->addBrick(step.placement, &placed_id, more_at_this_instant);
-        if (applied) start[placed_id] = step.placement.pose.translation();
+        if (applied) start[placed_id] = step.placement.pose;
         break;
       case PlannedStep::Action::kRemove:
         applied = world->removeBrick(step.id);

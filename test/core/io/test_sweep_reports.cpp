@@ -217,6 +217,28 @@ TEST(FallTracking, ALostBrickFallsAtItsLostEventAndTheDistanceIsTheCallers) {
   }
 }
 
+TEST(FallTracking, APlankThatTipsOffTurnsFartherThanItsCentreMoves) {
+  // A KAPLA plank on another, its centre 10 mm beyond the lower one's end:
+  // it tips about that edge until its far end meets the table, turning by
+  // asin(T / (L/2 + 10 mm)) = asin(7.8 / 68.5) = 0.114 rad, while its centre,
+  // 10.7 mm from the edge, moves about 1.2 mm: a fall the distance misses.
+  const double L = test::kKaplaLength, T = test::kKaplaThickness;
+  const std::string yaml = "bricks:\n  - {id: low, position: [0, 0, " + std::to_string(T / 2) +
+                           "]}\n  - {id: top, position: [" + std::to_string(L / 2 + 0.01) +
+                           ", 0, " + std::to_string(1.5 * T) + "]}\n";
+  WorldOptions world;
+  world.stability.mode = "none";
+  const RunReport report = run(yaml, 1.0, world);
+  ASSERT_EQ(report.falls.size(), 1u);
+  EXPECT_EQ(report.falls[0].id, "top");
+  for (const BrickOutcome& brick : report.bricks) {
+    if (brick.brick.id != "top") continue;
+    EXPECT_LT(brick.displacement, kDefaultFallDistance);
+    EXPECT_GT(brick.rotation, std::asin(T / (L / 2 + 0.01)) - 0.01);
+  }
+  EXPECT_NE(toJson(report).find("\"fall_angle\": 0.1"), std::string::npos);
+}
+
 TEST(SceneFriction, EveryBodyOfTheBuiltWorldHasIt) {
   const Scene scene = parsed(
       "friction: 0.3\n"

@@ -192,6 +192,11 @@ TEST(PlanVerdict, BadPlansAreRefusedBeforeAnythingRuns) {
     plan.fall_distance = distance;
     bad.push_back(plan);
   }
+  for (double angle : {nan, 0.0, -0.1}) {
+    Plan plan = plankOnTop(0.0);
+    plan.fall_angle = angle;
+    bad.push_back(plan);
+  }
   for (const Plan& plan : bad) {
     PlanOutcome outcome;
     EXPECT_FALSE(checkPlan(plan).ok);
@@ -210,7 +215,9 @@ TEST(PlanCopyInMode, AFrozenTowerIsJudgedAnewByAnotherModel) {
     ASSERT_EQ(copy->brickIds(), live->brickIds());
     for (const BrickSnapshot& brick : copy->snapshot()) {
       // Statics holds every brick of the tower: a model freezes it at once.
-      if (mode != "none") EXPECT_NE(brick.state, BrickState::kDynamic) << mode << " " << brick.id;
+      if (mode != "none") {
+        EXPECT_NE(brick.state, BrickState::kDynamic) << mode << " " << brick.id;
+      }
     }
   }
   std::unique_ptr<BrickWorld> copy;

@@ -43,6 +43,8 @@ TEST(RunSweepFlags, BadFallDistancesAreNamed) {
       {{"--scene", "x", "--fall-distance", "nan"}, "--fall-distance expects a finite number"},
       {{"--scene", "x", "--fall-distance", "inf"}, "--fall-distance expects a finite number"},
       {{"--scene", "x", "--fall-distance", "1cm"}, "--fall-distance expects a finite number"},
+      {{"--scene", "x", "--fall-angle", "0"}, "--fall-angle must be > 0 rad"},
+      {{"--scene", "x", "--fall-angle", "nan"}, "--fall-angle expects a finite number"},
       {{"--scene", "x", "--statics", "yes"}, "unexpected argument 'yes'"},
   };
   for (const Case& c : cases) {

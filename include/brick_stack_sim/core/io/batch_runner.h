@@ -18,6 +18,10 @@ namespace brick_stack_sim {
 /// Default of RunOptions::fall_distance [m]: a centimetre, far beyond what a
 /// brick that stays where it was laid ever drifts (micrometres).
 constexpr double kDefaultFallDistance = 0.01;
+/// Default of RunOptions::fall_angle [rad], about 6 degrees: a plank that
+/// tips off the one below turns by about its thickness over its half length
+/// (8 degrees for KAPLA) while its centre drops less than a centimetre.
+constexpr double kDefaultFallAngle = 0.1;
 /// Sim time between the runner's looks for fallen bricks [s] (every step
 /// when the step is longer): a fall's time is known to within it.
 constexpr double kFallCheckInterval = 0.01;
@@ -31,6 +35,8 @@ struct RunOptions {
   /// A brick has fallen once its centre of mass is farther than this from
   /// where it was placed [m] (finite, > 0), or it fell off the table or was lost.
   double fall_distance = kDefaultFallDistance;
+  /// Or once it has turned farther than this from how it was placed [rad] (finite, > 0).
+  double fall_angle = kDefaultFallAngle;
   /// Judge the scene's first structure by statics before the run
   /// (RunReport::statics, judgeInitialStructure()).
   bool statics = false;
@@ -75,6 +81,7 @@ struct RunReport {
   std::vector<RefusedPlacement> refused;
   std::size_t scheduled = 0;   ///< Bricks the scene places within the duration.
   double fall_distance = 0.0;  ///< [m], as run.
+  double fall_angle = 0.0;     ///< [rad], as run.
   /// Every brick that fell, lost ones included, in the order they were first
   /// seen fallen (by time; at one look, in placement order).
   std::vector<BrickFall> falls;

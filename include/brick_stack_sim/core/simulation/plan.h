@@ -38,6 +38,9 @@ struct Plan {
   /// A brick has fallen when it ends farther than this from where it was
   /// when the plan started, or from where the plan placed it [m].
   double fall_distance = 0.01;
+  /// Or when it has turned farther than this from how it started [rad]: a
+  /// plank that tips off the one below may end less than a centimetre away.
+  double fall_angle = 0.1;
 };
 
 /// The most a plan may simulate [s]: its duration is checked against it.
@@ -48,7 +51,9 @@ struct PlanBrickOutcome {
   BrickSnapshot brick;
   /// From where it was when the plan started, or where the plan placed it [m].
   double displacement = 0.0;
-  bool fell = false;  ///< Moved more than Plan::fall_distance, or fell off the table.
+  /// Moved more than Plan::fall_distance, turned more than Plan::fall_angle,
+  /// or fell off the table.
+  bool fell = false;
 };
 
 /// What a plan did.
@@ -66,7 +71,7 @@ struct PlanOutcome {
 
 /// Whether `plan` can be run as written: finite times in order from 0, a
 /// duration from the last step's time up to kMaxPlanDuration, a positive
-/// fall distance. What each step does is checked when it is applied.
+/// fall distance and angle. What each step does is checked when it is applied.
 Status checkPlan(const Plan& plan);
 
 /// Runs `plan` on `world` from its present time: each step when its time
