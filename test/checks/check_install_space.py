@@ -8,7 +8,7 @@ Installs the package with `catkin_make install` from the workspace WS
 first, then, in an environment that has sourced WS/install/setup.bash and
 nothing else (no devel space, no source tree on any path):
 
-  layout        every program, plot_bench.py, the launch, config, urdf,
+  layout        every program, plot_bench.py, stack_sim_sweep, the launch, config, urdf,
                 scenes, msg and srv files and the headers are installed, and
                 rospack finds the package there
   stack_sim_run `rosrun brick_stack_sim stack_sim_run --scene tower10 --mode
@@ -40,10 +40,11 @@ from junit_result import write_junit  # noqa: E402
 PACKAGE = "brick_stack_sim"
 PROGRAMS = ["brick_stack_sim_node", "stack_sim_run", "stack_sim_bench", "stack_sim_lp_bench",
             "stack_sim_held_bench", "blueprint_builder", "brick_placer", "keyboard_teleop",
-            "plot_bench.py"]
+            "plot_bench.py", "stack_sim_sweep"]
 SHARED = ["package.xml", "launch/sim.launch", "launch/teleop.launch", "launch/demo.launch",
           "config/sim.yaml", "config/stability.yaml", "config/bricks.yaml", "urdf/bricks.urdf",
-          "scenes/tower10.yaml", "scenes/empty.yaml", "msg/Brick.msg", "srv/PlaceBrick.srv"]
+          "scenes/tower10.yaml", "scenes/empty.yaml", "scenes/sweeps/block_towers.yaml",
+          "msg/Brick.msg", "srv/PlaceBrick.srv"]
 HEADERS = ["include/brick_stack_sim/ros/node.h", "include/brick_stack_sim/core/status.h",
            "include/brick_stack_sim/Brick.h"]
 
