@@ -40,10 +40,41 @@ std::uint64_t stepsUntil(double at, double dt) {
   return static_cast<std::uint64_t>(std::ceil(at / dt - 1e-9));
 }
 
+/// Where a brick was when the plan started, or where the plan placed it.
+struct StartOf {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  bool fell_off = false;  ///< Already on the floor then.
+};
+using Start = std::map<std::string, StartOf>;
+
+/// Applies one step to `world`; a placement's brick starts where placed.
+Status applyStep(const PlannedStep& step, bool more_at_this_instant, BrickWorld* world,
+                 Start* start) {
+  switch (step.action) {
+    case PlannedStep::Action::kPlace: {
+      std::string id;
+      const Status placed = world->addBrick(step.placement, &id, more_at_this_instant);
+      if (placed) (*start)[id] = {step.placement.pose, false};
+      return placed;
+    }
+    case PlannedStep::Action::kRemove:
+      return world->removeBrick(step.id);
+    case PlannedStep::Action::kPush: {
+      BrickSnapshot brick;
+      const bool centre = step.point.isZero() && world->find(step.id, &brick);
+      return world->applyImpulse(step.id, step.impulse,
+                                 centre ? Eigen::Vector3d(brick.pose.translation()) : step.point);
+    }
+    case PlannedStep::Action::kWait:
+      break;
+  }
+  return Status::success();
+}
+
 /// The bricks at the end of a plan against where they started, and the
 /// verdict, into `result` (its events already taken).
-void summarize(const Plan& plan, const std::map<std::string, Eigen::Isometry3d>& start,
-               const BrickWorld& world, PlanOutcome* outcome) {
+void summarize(const Plan& plan, const Start& start, const BrickWorld& world,
+               PlanOutcome* outcome) {
   PlanOutcome& result = *outcome;
   std::string first_fallen;
   for (const SimEvent& event : result.events) {
@@ -53,11 +84,12 @@ void summarize(const Plan& plan, const std::map<std::string, Eigen::Isometry3d>&
   }
   for (BrickSnapshot& brick : world.snapshot()) {
     PlanBrickOutcome outcome_of;
-    const Eigen::Isometry3d& from = start.at(brick.id);
-    outcome_of.displacement = (brick.pose.translation() - from.translation()).norm();
-    const double turn = Eigen::AngleAxisd(from.linear().transpose() * brick.pose.linear()).angle();
-    outcome_of.fell =
-        brick.fell_off || outcome_of.displacement > plan.fall_distance || turn > plan.fall_angle;
+    const StartOf& from = start.at(brick.id);
+    outcome_of.displacement = (brick.pose.translation() - from.pose.translation()).norm();
+    const double turn =
+        Eigen::AngleAxisd(from.pose.linear().transpose() * brick.pose.linear()).angle();
+    outcome_of.fell = (brick.fell_off && !from.fell_off) ||
+                      outcome_of.displacement > plan.fall_distance || turn > plan.fall_angle;
     if (outcome_of.fell && first_fallen.empty()) first_fallen = brick.id;
     result.fallen += outcome_of.fell;
     result.moving += brick.state == BrickState::kDynamic;
@@ -101,45 +133,37 @@ Status checkPlan(const Plan& plan) {
   return Status::success();
 }
 
-Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome) {
+Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome,
+               const std::atomic<bool>* stop) {
   if (Status valid = checkPlan(plan); !valid) return valid;
   world->takeEvents();
   const double dt = world->options().time_step;
-  // Where each brick started: a brick placed by the plan starts where placed.
-  std::map<std::string, Eigen::Isometry3d> start;
-  for (const BrickSnapshot& brick : world->snapshot()) start[brick.id] = brick.pose;
-  PlanOutcome result;
+  Start start;
+  for (const BrickSnapshot& brick : world->snapshot())
+    start[brick.id] = {brick.pose, brick.fell_off};
   std::uint64_t done = 0;
+  const auto stepUntil = [&](double at) {
+    for (const std::uint64_t due = stepsUntil(at, dt); done < due; ++done) {
+      if (stop && stop->load()) return false;
+      world->step();
+    }
+    return true;
+  };
+  const Status stopped = Status::error("stopped before its end: the simulation is shutting down");
   for (std::size_t i = 0; i < plan.steps.size(); ++i) {
-    const PlannedStep& step = plan.steps[i];
-    for (const std::uint64_t due = stepsUntil(step.at, dt); done < due; ++done) world->step();
+    if (!stepUntil(plan.steps[i].at)) return stopped;
     // Placements at one instant are judged as one structure.
     const bool more_at_this_instant = i + 1 < plan.steps.size() &&
                                       plan.steps[i + 1].action == PlannedStep::Action::kPlace &&
                                       stepsUntil(plan.steps[i + 1].at, dt) == done;
-    Status applied;
-    std::string placed_id;
-    switch (step.action) {
-      case PlannedStep::Action::kPlace:
-        applied = world->addBrick(step.placement, &placed_id, more_at_this_instant);
-        if (applied) start[placed_id] = step.placement.pose;
-        break;
-      case PlannedStep::Action::kRemove:
-        applied = world->removeBrick(step.id);
-        break;
-      case PlannedStep::Action::kPush:
-        applied = world->applyImpulse(step.id, step.impulse, step.point);
-        break;
-      case PlannedStep::Action::kWait:
-        break;
-    }
-    if (!applied) return Status::error(stepName(plan, i) + ": " + applied.message);
+    if (Status applied = applyStep(plan.steps[i], more_at_this_instant, world, &start); !applied)
+      return Status::error(stepName(plan, i) + ": " + applied.message);
   }
   world->judgePlacements();
-  for (const std::uint64_t due = stepsUntil(plan.duration, dt); done < due; ++done) world->step();
+  if (!stepUntil(plan.duration)) return stopped;
+  PlanOutcome result;
   result.sim_time = static_cast<double>(done) * dt;
   result.events = world->takeEvents();
-
   summarize(plan, start, *world, &result);
   *outcome = std::move(result);
   return Status::success();

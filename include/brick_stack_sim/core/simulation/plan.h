@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -27,7 +28,9 @@ struct PlannedStep {
   BrickPlacement placement;  ///< kPlace.
   std::string id;            ///< kRemove, kPush: the brick.
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< kPush [N s], frame world.
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< kPush: where [m], frame world.
+  /// kPush: where [m], frame world; all zero: the brick's centre where it
+  /// is when the step is applied.
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
 };
 
 /// A sequence of steps and how long to simulate.
@@ -52,7 +55,8 @@ struct PlanBrickOutcome {
   /// From where it was when the plan started, or where the plan placed it [m].
   double displacement = 0.0;
   /// Moved more than Plan::fall_distance, turned more than Plan::fall_angle,
-  /// or fell off the table.
+  /// or fell off the table during the plan (one already on the floor when it
+  /// started has not fallen again by lying there).
   bool fell = false;
 };
 
@@ -79,6 +83,9 @@ Status checkPlan(const Plan& plan);
 /// on to the duration. A step the world refuses ends the run with an error
 /// naming it; `world` is then part way through the plan, so run plans on a
 /// copy (BrickWorld::copy()). Takes the world's pending events first.
-Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome);
+/// `stop` (optional), once set, ends the run at the next step with an error
+/// (a node that shuts down does not wait for an hour of sim time).
+Status runPlan(const Plan& plan, BrickWorld* world, PlanOutcome* outcome,
+               const std::atomic<bool>* stop = nullptr);
 
 }  // namespace brick_stack_sim
