@@ -9,7 +9,12 @@ bool RestTracker::atRest(const BodyMotion& body) const {
 
 RestTracker::Mover& RestTracker::advance(const BodyMotion& body, double dt) {
   Mover& mover = movers_[body.handle];
-  mover.rest_time = atRest(body) ? mover.rest_time + dt : 0.0;
+  if (atRest(body)) {
+    mover.rest_time += dt;
+  } else {
+    mover.rest_time = 0.0;
+    mover.next_judgement = 0.0;
+  }
   return mover;
 }
 

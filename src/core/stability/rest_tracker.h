@@ -12,6 +12,10 @@ class RestTracker {
  public:
   struct Mover {
     double rest_time = 0.0;  ///< [s] below both rest speeds, without a break.
+    /// The rest time at which the criterion is next asked [s]: a brick it
+    /// did not admit is asked again a rest window later, not every step
+    /// (a leaning brick's statics is an LP).
+    double next_judgement = 0.0;
     BrickStability stability;
     /// Woken by the model, and where its centre of mass was then [m]: until
     /// it has moved away from there, it may freeze again only when statics

@@ -181,7 +181,8 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       mover.stability.supports =
           supportPatches(body, index.of(body.handle), frozenOrGround(graph_), options_);
     criterion_->evaluate(body, &mover.stability);
-    if (mover.rest_time >= options_.rest_time) resting.push_back(&body);
+    if (mover.rest_time >= std::max(options_.rest_time, mover.next_judgement))
+      resting.push_back(&body);
   }
   // A brick at rest on one that freezes now may freeze in the same step: a
   // stack placed at once joins from the bottom up without a step per layer.
@@ -205,6 +206,11 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       body = nullptr;
       froze = true;
     }
+  }
+  for (const BodyMotion* body : resting) {
+    if (!body) continue;
+    RestTracker::Mover& mover = rest_.record(body->handle);
+    mover.next_judgement = mover.rest_time + options_.rest_time;
   }
 }
 
