@@ -38,7 +38,8 @@ constexpr const char* kServices[] = {ros_adapter::kPlaceBrickService,
                                      ros_adapter::kPauseService,
                                      ros_adapter::kStepService,
                                      ros_adapter::kGraspBrickService,
-                                     ros_adapter::kReleaseBrickService};
+                                     ros_adapter::kReleaseBrickService,
+                                     ros_adapter::kSimulatePlanService};
 
 std::string notAvailable(const std::string& service, double waited) {
   return "service " + service + " not available after " + formatSeconds(waited) + " s";
@@ -164,6 +165,10 @@ Reply<ReleaseBrick::Response> SimClient::releaseBrick(const std::string& id,
   request.id = id;
   request.twist = twist;
   return call<ReleaseBrick>(kRelease, ros_adapter::kReleaseBrickService, request);
+}
+
+Reply<SimulatePlan::Response> SimClient::simulatePlan(const SimulatePlan::Request& request) {
+  return call<SimulatePlan>(kSimulatePlan, ros_adapter::kSimulatePlanService, request);
 }
 
 }  // namespace client

@@ -6,9 +6,10 @@
 // it measures the node's CPU (from /proc, as a share of one core), the rates
 // and sizes of what it publishes, and the latency of ~get_bricks,
 // ~query_placement and ~place_brick from this C++ client. One CSV row per
-// case. scripts/run_node_bench.sh starts the node and plots the rows.
+// case; first the planner case (node_bench_planner.h; --planner: it alone).
+// scripts/run_node_bench.sh starts the node and plots the rows.
 //
-//   stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]
+//   stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--planner] [--window SECONDS]
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,6 +35,7 @@
 
 #include "brick_stack_sim/client/sim_client.h"
 #include "brick_stack_sim/ros/interface_names.h"
+#include "node_bench_planner.h"
 
 namespace {
 
@@ -334,15 +336,17 @@ std::string writeScene(const Case& scene, const std::string& directory) {
 struct Arguments {
   std::string output;
   bool quick = false;
-  bool delta = false;   ///< The node runs with bricks_delta: the busy scenes, one subscriber.
-  double window = 5.0;  ///< [s]
+  bool delta = false;    ///< The node runs with bricks_delta: the busy scenes, one subscriber.
+  bool planner = false;  ///< Only the planner case.
+  double window = 5.0;   ///< [s]
 };
 
 /// False (with the reason on stderr) when the command line is not one.
 bool parseArguments(const std::vector<std::string>& args, Arguments* parsed) {
   if (args.size() < 2) {
     std::fprintf(stderr,
-                 "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--window SECONDS]\n");
+                 "usage: stack_sim_node_bench OUTPUT.csv [--quick] [--delta] [--planner] "
+                 "[--window SECONDS]\n");
     return false;
   }
   parsed->output = args[1];
@@ -351,6 +355,8 @@ bool parseArguments(const std::vector<std::string>& args, Arguments* parsed) {
       parsed->quick = true;
     } else if (args[i] == "--delta") {
       parsed->delta = true;
+    } else if (args[i] == "--planner") {
+      parsed->planner = true;
     } else if (args[i] == "--window" && i + 1 < args.size()) {
       parsed->window = std::atof(args[++i].c_str());
     } else {
@@ -423,12 +429,15 @@ int main(int argc, char** argv) {
   std::vector<Case> cases;
   std::vector<int> subscriber_counts;
   planCases(arguments, &cases, &subscriber_counts);
+  if (arguments.planner) cases.clear();
   std::vector<Row> rows;
-  NodeBench bench(arguments.window, pid, std::move(sim));
   int failed = 0;
+  // The planner case in both plans; not in the ~bricks delta pass.
+  if (!arguments.delta && !node_bench::runPlanner(sim, directory, arguments.output)) ++failed;
+  NodeBench bench(arguments.window, pid, std::move(sim));
   for (const Case& scene : cases)
     if (!bench.run(scene, writeScene(scene, directory), subscriber_counts, &rows)) ++failed;
-  writeCsv(arguments.output, rows);
+  if (!arguments.planner) writeCsv(arguments.output, rows);
   spinner.stop();
   return failed == 0 ? 0 : 1;
 }

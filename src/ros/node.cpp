@@ -34,6 +34,7 @@ Status SimNode::create(const ros::NodeHandle& private_node_handle, const NodeOpt
   if (Status valid = validate(options.config.world); !valid) return prefixed("parameter ~", valid);
   if (Status valid = validate(options.config.publish); !valid)
     return prefixed("parameter ~", valid);
+  if (Status valid = validateMaxConcurrentPlans(options.max_concurrent_plans); !valid) return valid;
   if (types.empty()) return Status::error("no brick types: check ~types_urdf");
   std::unique_ptr<SimNode> self(new SimNode(private_node_handle, options));
   if (Status created = Simulation::create(options.config.world, types, &self->simulation_);
@@ -59,7 +60,9 @@ SimNode::SimNode(const ros::NodeHandle& private_node_handle, const NodeOptions& 
     : options_(options), pacer_(pacerOptions(options)), node_handle_(private_node_handle) {}
 
 SimNode::~SimNode() {
+  stopping_plans_ = true;
   if (long_work_spinner_) long_work_spinner_->stop();
+  if (plan_spinner_) plan_spinner_->stop();
 }
 
 double SimNode::simTime() const { return simulation_->time(); }
@@ -107,6 +110,12 @@ void SimNode::advertiseServices() {
   // The long requests get their own queue and thread.
   long_work_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &long_work_queue_);
   long_work_spinner_->start();
+  // Plans get a queue of their own: one thread per plan that may run, and
+  // one more that refuses the next request at once instead of queueing it
+  // behind them. None of them holds up the short requests or ~step.
+  plan_spinner_ =
+      std::make_unique<ros::AsyncSpinner>(options_.max_concurrent_plans + 1, &plan_queue_);
+  plan_spinner_->start();
 
   services_.push_back(advertiseGuarded(kPlaceBrickService, &SimNode::placeBrick));
   services_.push_back(advertiseGuarded(kRemoveBrickService, &SimNode::removeBrick));
@@ -119,6 +128,7 @@ void SimNode::advertiseServices() {
   services_.push_back(advertiseGuarded(kStepService, &SimNode::step, &long_work_queue_));
   services_.push_back(advertiseGuarded(kGraspBrickService, &SimNode::graspBrick));
   services_.push_back(advertiseGuarded(kReleaseBrickService, &SimNode::releaseBrick));
+  services_.push_back(advertiseGuarded(kSimulatePlanService, &SimNode::simulatePlan, &plan_queue_));
   held_target_subscriber_ =
       node_handle_.subscribe(kHeldTargetTopic, 10, &SimNode::onHeldTarget, this);
 }

@@ -30,6 +30,8 @@ bool SimNode::refuse(const char* service, const Status& status, Response* respon
   response->message = status.message;
   return true;
 }
+// ~simulate_plan (node_plans.cpp) refuses the same way.
+template bool SimNode::refuse(const char*, const Status&, SimulatePlan::Response*);
 
 void SimNode::changed() {
   publisher_->markDirty();

@@ -32,6 +32,7 @@
 #include "brick_stack_sim/ReleaseBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/SimulatePlan.h"
 #include "brick_stack_sim/StabilityEvent.h"
 #include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/ros/interface_names.h"
@@ -141,6 +142,10 @@ class SimClient {
   /// ~release_brick: the held brick `id` lets go with `twist` [m/s, rad/s].
   Reply<ReleaseBrick::Response> releaseBrick(
       const std::string& id, const geometry_msgs::Twist& twist = geometry_msgs::Twist());
+  /// ~simulate_plan: request.steps run on a copy of the world, which the live
+  /// world never sees; the response says what would stand and what would
+  /// fall. Blocks for as long as the plan simulates (seconds for a long one).
+  Reply<SimulatePlan::Response> simulatePlan(const SimulatePlan::Request& request);
 
   // --- topics ----------------------------------------------------------------
 
@@ -182,6 +187,7 @@ class SimClient {
     kStep,
     kGrasp,
     kRelease,
+    kSimulatePlan,
     kSlots
   };
 

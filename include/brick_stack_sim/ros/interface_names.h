@@ -29,9 +29,12 @@ constexpr char kPauseService[] = "pause";
 constexpr char kStepService[] = "step";
 constexpr char kGraspBrickService[] = "grasp_brick";
 constexpr char kReleaseBrickService[] = "release_brick";
+constexpr char kSimulatePlanService[] = "simulate_plan";
 
 /// Parameters a client reads from the node's namespace.
 constexpr char kPublishRateParameter[] = "publish_rate";
+/// How many ~simulate_plan requests the node runs at once.
+constexpr char kMaxConcurrentPlansParameter[] = "max_concurrent_plans";
 
 /// The frame of the poses a client sends (~held_target, the requests): the
 /// default of the node's parameter frame_id.

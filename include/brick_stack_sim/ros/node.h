@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "brick_stack_sim/ReleaseBrick.h"
 #include "brick_stack_sim/RemoveBrick.h"
 #include "brick_stack_sim/ResetScene.h"
+#include "brick_stack_sim/SimulatePlan.h"
 #include "brick_stack_sim/StepSimulation.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "brick_stack_sim/core/simulation/simulation.h"
@@ -50,10 +52,13 @@ constexpr int kServiceThreads = 4;
 /// Threads: the short requests and the timer run on the global callback queue,
 /// which main() spins with kServiceThreads threads; ~step and ~reset, which may
 /// take seconds, run on a queue of their own with one thread, so they never
-/// hold up the others. The world and everything the node keeps about it are
-/// guarded by one fair lock (world_mutex_), taken once per request or tick, so
-/// requests and steps never interleave; a long ~step hands the lock over
-/// between steps whenever someone waits for it.
+/// hold up the others; ~simulate_plan runs on a third queue with one thread
+/// more than plans may run at once (max_concurrent_plans), so that the one
+/// past the bound is refused at once while the others simulate. The world
+/// and everything the node keeps about it are guarded by one fair lock
+/// (world_mutex_), taken once per request or tick, so requests and steps never
+/// interleave; a long ~step hands the lock over between steps whenever
+/// someone waits for it, and a plan holds it only while it copies the world.
 class SimNode {
  public:
   /// Creates the simulation, advertises every topic and service and, when
@@ -64,7 +69,8 @@ class SimNode {
 
   SimNode(const SimNode&) = delete;
   SimNode& operator=(const SimNode&) = delete;
-  /// Stops the long-work thread before the world it uses goes away.
+  /// Stops the long-work and plan threads before what they use goes away (a
+  /// plan under way is waited for: runPlan cannot be interrupted).
   ~SimNode();
 
  private:
@@ -80,7 +86,8 @@ class SimNode {
   // --- set-up (node.cpp) -----------------------------------------------------
   /// Plays the parameter `scene`, if any, before anything is advertised.
   Status playInitialScene();
-  /// Every service and ~held_target; ~step and ~reset on the long-work queue.
+  /// Every service and ~held_target; ~step and ~reset on the long-work queue,
+  /// ~simulate_plan on the plan queue.
   void advertiseServices();
   /// Advertises `handler` as `service` on `queue` (null: the global one); an
   /// allocation failure inside it is answered as a refusal with a message
@@ -125,6 +132,9 @@ class SimNode {
   bool step(StepSimulation::Request& request, StepSimulation::Response& response);
   bool graspBrick(GraspBrick::Request& request, GraspBrick::Response& response);
   bool releaseBrick(ReleaseBrick::Request& request, ReleaseBrick::Response& response);
+  /// ~simulate_plan (node_plans.cpp): checks the request, copies the world
+  /// under the lock and runs the plan on the copy off it.
+  bool simulatePlan(SimulatePlan::Request& request, SimulatePlan::Response& response);
 
   /// ~held_target: where the held brick goes. A target in another frame, not
   /// finite, or with nothing held is ignored with a (throttled) warning.
@@ -177,6 +187,13 @@ class SimNode {
   /// ~step and ~reset: served by their own thread.
   ros::CallbackQueue long_work_queue_;
   std::unique_ptr<ros::AsyncSpinner> long_work_spinner_;
+  /// ~simulate_plan: max_concurrent_plans + 1 threads of their own.
+  ros::CallbackQueue plan_queue_;
+  std::unique_ptr<ros::AsyncSpinner> plan_spinner_;
+  /// Plans simulating now (not guarded by world_mutex_: a plan runs off it).
+  std::atomic<int> running_plans_{0};
+  /// Set when the node shuts down: running plans end at their next step.
+  std::atomic<bool> stopping_plans_{false};
 };
 
 }  // namespace ros_adapter

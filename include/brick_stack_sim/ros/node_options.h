@@ -15,12 +15,25 @@ namespace ros_adapter {
 /// and how it paces the world.
 struct NodeOptions {
   SimulationConfig config;
+  /// ~simulate_plan requests run at once (parameter ~max_concurrent_plans,
+  /// in [kMinConcurrentPlans, kMaxConcurrentPlans]); one more is refused. Each
+  /// plan holds a copy of the world and a core while it runs.
+  int max_concurrent_plans = 2;
 
   // Not parameters: how the node paces the world (node.cpp explains the values).
   double step_timer_rate = 200.0;  ///< Wall-time rate of the stepping timer [Hz].
   int max_steps_per_tick = 2000;   ///< Upper bound of world steps per timer tick.
   double max_step_budget = 0.8;    ///< Share of a timer period spent stepping [-].
 };
+
+/// The range of ~max_concurrent_plans: at least one plan, and no more
+/// threads than a node should start for them.
+constexpr int kMinConcurrentPlans = 1;
+constexpr int kMaxConcurrentPlans = 64;
+
+/// Success when `max_concurrent_plans` is in its range; otherwise the
+/// message names the parameter ("parameter ~max_concurrent_plans = 0: ...").
+Status validateMaxConcurrentPlans(int max_concurrent_plans);
 
 /// Reads the node's private parameters (readPrivateParameters) over the
 /// defaults of `*options` with the core's readers. A parameter the node does

@@ -27,6 +27,8 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "brick_stack_sim/ros/interface_names.h"
+#include "brick_stack_sim/ros/plan_conversions.h"
+#include "call_within.h"
 #include "node_fixture.h"
 
 namespace {
@@ -46,6 +48,27 @@ bool finite(const geometry_msgs::Quaternion& q) {
   return finite(q.x) && finite(q.y) && finite(q.z) && finite(q.w);
 }
 bool finite(const geometry_msgs::Pose& p) { return finite(p.position) && finite(p.orientation); }
+
+/// The same bricks, poses and twists to the last bit.
+bool sameBits(const std::vector<Brick>& a, const std::vector<Brick>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Brick &x = a[i], &y = b[i];
+    if (x.id != y.id || x.state != y.state) return false;
+    const double u[] = {x.pose.position.x,    x.pose.position.y,    x.pose.position.z,
+                        x.pose.orientation.x, x.pose.orientation.y, x.pose.orientation.z,
+                        x.pose.orientation.w, x.twist.linear.x,     x.twist.linear.y,
+                        x.twist.linear.z,     x.twist.angular.x,    x.twist.angular.y,
+                        x.twist.angular.z};
+    const double v[] = {y.pose.position.x,    y.pose.position.y,    y.pose.position.z,
+                        y.pose.orientation.x, y.pose.orientation.y, y.pose.orientation.z,
+                        y.pose.orientation.w, y.twist.linear.x,     y.twist.linear.y,
+                        y.twist.linear.z,     y.twist.angular.x,    y.twist.angular.y,
+                        y.twist.angular.z};
+    if (!std::equal(std::begin(u), std::end(u), std::begin(v))) return false;
+  }
+  return true;
+}
 
 bool finite(const Brick& b) {
   return finite(b.pose) && finite(b.twist.linear) && finite(b.twist.angular) && finite(b.size) &&
@@ -150,6 +173,57 @@ class ServiceFuzz : public test::NodeFixture {
     return false;
   }
 
+  /// ~simulate_plan as callInTime sends the other services.
+  bool planInTime(SimulatePlan& srv) {
+    std::shared_ptr<client::SimClient> sim = sim_;
+    const SimulatePlan::Request request = srv.request;
+    const auto reply = test::within<client::Reply<SimulatePlan::Response>>(
+        kCallTimeout, [sim, request] { return sim->simulatePlan(request); });
+    if (!reply || !reply->reached) {
+      EXPECT_TRUE(reply && reply->reached) << (reply ? reply->message : "no answer");
+      hung_ = true;
+      return false;
+    }
+    srv.response = reply->response;
+    return true;
+  }
+
+  /// A plan as hostile as the single requests: steps of every action (and
+  /// beyond), times out of order or not finite, the poses, ids and impulses
+  /// above; now and then far too many steps, or many that are harmless.
+  SimulatePlan::Request hostilePlan() {
+    SimulatePlan::Request request;
+    if (chance(0.02)) {  // one too many: refused before anything runs
+      request.steps.resize(ros_adapter::kMaxPlanSteps + 1);
+      return request;
+    }
+    if (chance(0.02)) {  // the most there may be, every one a wait
+      request.steps.resize(ros_adapter::kMaxPlanSteps);
+      for (PlanStep& wait : request.steps) wait.action = PlanStep::WAIT;
+      return request;
+    }
+    double at = 0.0;
+    for (int i = static_cast<int>(pick({0, 1, 2, 4})); i > 0; --i) {
+      PlanStep step;
+      step.action = static_cast<std::uint8_t>(chance(0.9) ? pick({0, 0, 1, 2, 3}) : pick({4, 255}));
+      at += chance(0.9) ? uniform(0.0, 0.3) : pick({-0.5, kNaN, kInf, 5000.0});
+      step.at = at;
+      step.id = chance(0.3) ? "" : id();
+      step.pose = pose();
+      if (chance(0.2)) step.twist.linear = vector(2.0);
+      step.impulse = vector(0.01);
+      if (chance(0.5)) {
+        step.point.x = coordinate(-0.5, 0.5);
+        step.point.z = coordinate(0, 0.1);
+      }
+      request.steps.push_back(step);
+    }
+    request.duration = chance(0.8) ? pick({0.0, 0.5, 1.0}) : pick({kNaN, -1.0, 1e9, kInf});
+    request.fall_distance = chance(0.9) ? pick({0.0, 0.005}) : pick({kNaN, -0.01});
+    request.mode = chance(0.8) ? "" : chance(0.5) ? "none" : "magic";
+    return request;
+  }
+
   double pick(std::initializer_list<double> values) {
     std::vector<double> v(values);
     return v[std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(random_)];
@@ -219,7 +293,7 @@ class ServiceFuzz : public test::NodeFixture {
   }
 
   void fuzzOnce() {
-    const int service = std::uniform_int_distribution<int>(0, 12)(random_);
+    const int service = std::uniform_int_distribution<int>(0, 13)(random_);
     switch (service) {
       case 0:
       case 1:
@@ -338,6 +412,26 @@ class ServiceFuzz : public test::NodeFixture {
         tally(ros_adapter::kReleaseBrickService, srv.response);
         return;
       }
+      case 12: {  // a plan: on a copy, so the live bricks must not show it
+        GetBricks before, after;
+        if (!callInTime(before)) return;
+        SimulatePlan srv;
+        srv.request = hostilePlan();
+        if (!planInTime(srv)) return;
+        if (!callInTime(after)) return;
+        // Paused (the clock did not move), not one bit of the live world changed.
+        if (before.response.message == after.response.message) {
+          EXPECT_TRUE(sameBits(before.response.bricks, after.response.bricks))
+              << "a plan changed the live world";
+        }
+        tally(ros_adapter::kSimulatePlanService, srv.response);
+        if (srv.response.success) {
+          EXPECT_TRUE(finite(srv.response.sim_time) && finite(srv.response.wall_time));
+          for (const PlanBrick& b : srv.response.bricks)
+            EXPECT_TRUE(finite(b.brick) && finite(b.displacement)) << "plan brick " << b.brick.id;
+        }
+        return;
+      }
       default: {  // a topic: no answer to check, only that nothing breaks
         geometry_msgs::PoseStamped target;
         target.header.frame_id = chance(0.9) ? "world" : "elsewhere";
@@ -403,10 +497,11 @@ TEST_F(ServiceFuzz, EveryAnswerChecksAndTheBricksAreWhatTheAcceptedRequestsBuilt
   // Every service was both accepted and refused at least once: the fuzz
   // reached past the input checks and into them (~pause has no bad input).
   EXPECT_GT(counts_[ros_adapter::kPauseService].accepted, 0);
-  for (const char* service : {ros_adapter::kPlaceBrickService, ros_adapter::kRemoveBrickService,
-                              ros_adapter::kPushBrickService, ros_adapter::kQueryPlacementService,
-                              ros_adapter::kStepService, ros_adapter::kResetService,
-                              ros_adapter::kGraspBrickService, ros_adapter::kReleaseBrickService}) {
+  for (const char* service :
+       {ros_adapter::kPlaceBrickService, ros_adapter::kRemoveBrickService,
+        ros_adapter::kPushBrickService, ros_adapter::kQueryPlacementService,
+        ros_adapter::kStepService, ros_adapter::kResetService, ros_adapter::kGraspBrickService,
+        ros_adapter::kReleaseBrickService, ros_adapter::kSimulatePlanService}) {
     EXPECT_GT(counts_[service].accepted, 0) << service << " never accepted";
     EXPECT_GT(counts_[service].refused, 0) << service << " never refused";
   }
