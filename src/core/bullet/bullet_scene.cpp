@@ -294,6 +294,23 @@ double BulletScene::angularSpeed(BodyHandle handle) const {
   return impl_->rigid(handle).getAngularVelocity().length();
 }
 
+std::vector<BodyHandle> BulletScene::inWorldNear(const Eigen::Vector3d& low,
+                                                 const Eigen::Vector3d& high) const {
+  struct Collector : btBroadphaseAabbCallback {
+    std::vector<BodyHandle> found;
+    bool process(const btBroadphaseProxy* proxy) override {
+      const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+      const int index = object->getUserIndex();
+      if (index >= 0 && index != kTableUserIndex && index != kFloorUserIndex)
+        found.push_back(static_cast<BodyHandle>(index));
+      return true;
+    }
+  } collector;
+  impl_->world->getBroadphase()->aabbTest(convertEigenToBt(low), convertEigenToBt(high), collector);
+  std::sort(collector.found.begin(), collector.found.end());
+  return collector.found;
+}
+
 void BulletScene::bounds(BodyHandle handle, Eigen::Vector3d* low, Eigen::Vector3d* high) const {
   btVector3 bt_low, bt_high;
   impl_->rigid(handle).getAabb(bt_low, bt_high);

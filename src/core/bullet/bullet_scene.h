@@ -90,6 +90,12 @@ class BulletScene {
   /// whether Bullet or Eigen holds the vector [m/s], [rad/s].
   double linearSpeed(BodyHandle handle) const;
   double angularSpeed(BodyHandle handle) const;
+  /// The bricks in Bullet's world whose broadphase boxes (a little larger
+  /// than their bounds) overlap `low`..`high` [m], in handle order: what a
+  /// placement may touch among the bodies Bullet holds, found through its
+  /// tree in time that follows what is near, not how many bodies there are.
+  std::vector<BodyHandle> inWorldNear(const Eigen::Vector3d& low,
+                                      const Eigen::Vector3d& high) const;
   /// The body's bounding box at its pose, collision margin included [m].
   void bounds(BodyHandle handle, Eigen::Vector3d* low, Eigen::Vector3d* high) const;
 

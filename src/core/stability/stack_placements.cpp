@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "stability/contact_classifier.h"
@@ -132,28 +133,43 @@ void StackStabilityModel::placeAtRest(const RestingPlacement& placed,
   }
   if (!criterion_->usesSideContacts()) return;
   unjudged_[placed.brick.handle] = placed;
+  for (const PairContact& contact : placed.contacts) {
+    const BodyHandle other = contact.a == placed.brick.handle ? contact.b : contact.a;
+    if (unjudged_.count(other)) touched_by_[other].push_back(placed.brick.handle);
+  }
   admitGroupAtRest(placed.brick.handle, decisions);
 }
 
 void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions* decisions,
                                            const std::vector<PairContact>* frozen_contacts) {
-  // A brick placed earlier saw none of the later ones: the contacts of all
-  // of them together name every pair once (a brick frozen since adds its own).
-  std::vector<PairContact> contacts;
-  if (frozen_contacts) contacts = *frozen_contacts;
-  for (const auto& entry : unjudged_)
-    contacts.insert(contacts.end(), entry.second.contacts.begin(), entry.second.contacts.end());
-  const ContactIndex index(&contacts);
+  // The unjudged bricks `newest` reaches: a brick placed earlier saw none of
+  // the later ones, so each brick's contacts lead to earlier ones and
+  // touched_by_ to later ones. Only the group is visited: placing n bricks
+  // at once must not cost n^2.
   std::vector<BodyHandle> group{newest};
+  std::set<BodyHandle> in_group{newest};
+  const auto reach = [&](BodyHandle other) {
+    if (unjudged_.count(other) && in_group.insert(other).second) group.push_back(other);
+  };
   for (std::size_t next = 0; next < group.size(); ++next) {
-    for (const PairContact* contact : index.of(group[next])) {
-      const BodyHandle other = contact->a == group[next] ? contact->b : contact->a;
-      if (unjudged_.count(other) && std::find(group.begin(), group.end(), other) == group.end())
-        group.push_back(other);
-    }
+    const BodyHandle member = group[next];
+    for (const PairContact& contact : unjudged_.at(member).contacts)
+      reach(contact.a == member ? contact.b : contact.a);
+    const auto later = touched_by_.find(member);
+    if (later != touched_by_.end())
+      for (BodyHandle other : later->second) reach(other);
   }
   if (group.size() < 2) return;
   std::sort(group.begin(), group.end());
+  // Together the contacts of the group (and of a brick frozen since) name
+  // every pair of it once, in the order of the members.
+  std::vector<PairContact> contacts;
+  if (frozen_contacts) contacts = *frozen_contacts;
+  for (BodyHandle member : group) {
+    const std::vector<PairContact>& own = unjudged_.at(member).contacts;
+    contacts.insert(contacts.end(), own.begin(), own.end());
+  }
+  const ContactIndex index(&contacts);
   const SupporterTest frozen_or_member = [&](BodyHandle handle) {
     return graph_.canSupport(handle) || std::binary_search(group.begin(), group.end(), handle);
   };
@@ -166,11 +182,23 @@ void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions
                                            options_, &stability[i].side_contacts);
     criterion_->evaluate(bodies[i], &stability[i]);
   }
+  // Bricks that touch nothing but each other cannot balance their weight:
+  // no statics to ask (a tower placed in the air).
+  const auto outside = [&](const SupportPatch& patch) {
+    return !std::binary_search(group.begin(), group.end(), patch.supporter);
+  };
+  const bool held_from_outside =
+      std::any_of(stability.begin(), stability.end(), [&](const BrickStability& s) {
+        return std::any_of(s.supports.begin(), s.supports.end(), outside) ||
+               std::any_of(s.side_contacts.begin(), s.side_contacts.end(), outside);
+      });
+  if (!held_from_outside) return;
   std::vector<FreezeDecision> admitted;
   if (!criterion_->admitsGroup(bodies, stability, &admitted)) return;
   for (std::size_t i = 0; i < group.size(); ++i) {
     freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
     unjudged_.erase(group[i]);
+    touched_by_.erase(group[i]);
   }
 }
 

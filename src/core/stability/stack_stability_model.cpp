@@ -91,7 +91,8 @@ StackStabilityModel::StackStabilityModel(const StackStabilityModel& other, BodyN
       resting_(other.resting_),
       steps_(other.steps_),
       loads_judged_at_(other.loads_judged_at_),
-      unjudged_(other.unjudged_) {}
+      unjudged_(other.unjudged_),
+      touched_by_(other.touched_by_) {}
 
 std::unique_ptr<StabilityModel> StackStabilityModel::clone(BodyNamer name_of) const {
   return std::unique_ptr<StabilityModel>(new StackStabilityModel(*this, std::move(name_of)));
@@ -99,7 +100,10 @@ std::unique_ptr<StabilityModel> StackStabilityModel::clone(BodyNamer name_of) co
 
 void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions* decisions) {
   // Bullet has moved them: what was placed at rest is no longer where it was.
-  if (input.dt > 0.0) unjudged_.clear();
+  if (input.dt > 0.0) {
+    unjudged_.clear();
+    touched_by_.clear();
+  }
   for (BodyHandle removed : input.removed) forget(removed, "removed", decisions);
   for (BodyHandle grasped : input.grasped) forget(grasped, "grasped", decisions);
   for (const RestingPlacement& slid : input.slid) slide(slid, decisions);
@@ -160,6 +164,7 @@ void StackStabilityModel::forget(BodyHandle brick, const char* what_happened,
                                  StabilityDecisions* decisions) {
   rest_.erase(brick);
   unjudged_.erase(brick);
+  touched_by_.erase(brick);
   loads_.forget(brick);
   for (BodyHandle upper : graph_.erase(brick)) {
     wakeWithLoad(WakeDecision{upper, WakeCause::kSupporterRemoved, brick, 0.0,

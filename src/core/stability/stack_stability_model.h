@@ -106,6 +106,9 @@ class StackStabilityModel : public StabilityModel {
   std::unordered_map<BodyHandle, std::uint64_t> loads_judged_at_;
   /// Bricks placed at rest since the last step that did not join alone.
   std::map<BodyHandle, RestingPlacement> unjudged_;
+  /// For an unjudged brick, the unjudged bricks placed after it that touch
+  /// it (its own contacts name only those placed before).
+  std::map<BodyHandle, std::vector<BodyHandle>> touched_by_;
 };
 
 }  // namespace brick_stack_sim

@@ -90,15 +90,15 @@ Status checkPlacement(const WorldState& w, const BrickPlacement& p) {
   const PlacedSolid solid = type->placed(p.pose);
   const Eigen::AlignedBox3d extent = bounds(solid);
   const Eigen::Vector3d low = extent.min(), high = extent.max();
-  // Candidates: every brick that is not frozen, and the frozen ones whose
-  // boxes come near, in placement order.
-  std::vector<BodyHandle> candidates;
-  for (const BrickRecord* brick : w.sets.movers()) candidates.push_back(brick->handle);
-  for (const BrickRecord* brick : w.sets.held()) candidates.push_back(brick->handle);
+  // Candidates: the bricks whose boxes come near, from Bullet's tree (what
+  // moves or is held) and the dormant colliders' (what is frozen), in
+  // placement order. Every brick in turn would make placing n bricks cost n^2.
   const Eigen::Vector3d nearby = Eigen::Vector3d::Constant(kNearby);
+  std::vector<BodyHandle> candidates = w.scene.inWorldNear(low - nearby, high + nearby);
   for (BodyHandle frozen : w.dormant.near(low - nearby, high + nearby))
     candidates.push_back(frozen);
   std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   for (BodyHandle other : candidates) {
     const double gap = separation(solid, w.solidOf(other));
     if (gap < -w.options.overlap_tolerance)
@@ -143,9 +143,13 @@ std::vector<PairContact> restingContacts(const WorldState& w, BodyHandle brick, 
   for (BodyHandle frozen : w.dormant.near(low - reach, high + reach))
     appendContacts(w, brick, friction, box, frozen, leaning, &contacts);
   if (leaning) {
-    for (BodyHandle placed : w.placed_at_rest) {
+    // Of the movers placed at rest (in placement order), those near.
+    for (BodyHandle placed : w.scene.inWorldNear(low - reach, high + reach)) {
+      if (placed == brick ||
+          !std::binary_search(w.placed_at_rest.begin(), w.placed_at_rest.end(), placed))
+        continue;
       const BrickRecord* record = w.bricks.find(placed);
-      if (placed != brick && record && record->mode == BrickMode::kDynamic)
+      if (record && record->mode == BrickMode::kDynamic)
         appendContacts(w, brick, friction, box, placed, true, &contacts);
     }
   }

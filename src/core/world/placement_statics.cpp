@@ -133,9 +133,9 @@ std::vector<PairContact> touchingBricks(const WorldState& w, BodyHandle brick, d
   const Eigen::AlignedBox3d reach(low.array() - w.options.stability.contact_distance,
                                   high.array() + w.options.stability.contact_distance);
   std::vector<BodyHandle> near = w.dormant.near(reach.min(), reach.max());
-  for (const BrickRecord* mover : w.sets.movers()) near.push_back(mover->handle);
-  for (const BrickRecord* held : w.sets.held()) near.push_back(held->handle);
+  for (BodyHandle body : w.scene.inWorldNear(reach.min(), reach.max())) near.push_back(body);
   std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
   for (BodyHandle other : near)
     if (other != brick) appendContacts(w, brick, friction, box, other, true, &contacts);
   return contacts;

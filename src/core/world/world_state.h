@@ -67,8 +67,9 @@ struct WorldState {
   /// model has not judged the structure as a whole yet (the next step or
   /// request does).
   bool judgement_pending = false;
-  /// Movers placed at rest since the last step: Bullet has not moved them,
-  /// so a brick placed at rest against one is judged with it (a V).
+  /// Movers placed at rest since the last step, in placement order: Bullet
+  /// has not moved them, so a brick placed at rest against one is judged
+  /// with it (a V).
   std::vector<BodyHandle> placed_at_rest;
   unsigned next_serial = 0;
   /// Grows at every step that moves or judges something and at every request
