@@ -7,13 +7,13 @@
 namespace brick_stack_sim {
 namespace ros_adapter {
 
-namespace {
-
 Status notFinite(const std::string& field, double value) {
   std::ostringstream text;
   text << field << " is " << value << ": every number must be finite";
   return Status::error(text.str());
 }
+
+namespace {
 
 /// Checks named components in order so the message points at the first bad one.
 Status checkFinite(const std::string& field,

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 #include "brick_stack_sim/ros/conversions.h"
@@ -15,12 +14,6 @@ namespace brick_stack_sim {
 namespace ros_adapter {
 
 namespace {
-
-Status notFinite(const std::string& field, double value) {
-  std::ostringstream text;
-  text << field << " is " << value << ": every number must be finite";
-  return Status::error(text.str());
-}
 
 /// NaN or Inf anywhere in a step is refused, in the fields its action uses
 /// or not: a planner that sends one has a bug worth hearing about. (Only a

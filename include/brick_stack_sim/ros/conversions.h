@@ -13,9 +13,9 @@
 #include "brick_stack_sim/PlaceBrick.h"
 #include "brick_stack_sim/PushBrick.h"
 #include "brick_stack_sim/StabilityEvent.h"
+#include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/sim_event.h"
-#include "brick_stack_sim/core/status.h"
 
 namespace brick_stack_sim {
 namespace ros_adapter {
@@ -27,6 +27,9 @@ constexpr double kQuaternionNormTolerance = 1e-3;
 
 // --- messages in: every value is checked before it reaches the core --------
 // `field` names the message field in the error ("pose.position.x is nan").
+
+/// The refusal of a number that is not finite, naming its field ("steps[2].at").
+Status notFinite(const std::string& field, double value);
 
 /// Position [m] and orientation of a pose. Refused: NaN/Inf anywhere, a
 /// quaternion whose norm differs from 1 by more than kQuaternionNormTolerance
