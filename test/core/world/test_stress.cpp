@@ -102,7 +102,8 @@ TEST_P(StressByMode, TimeStepsUpToBlowUpNeverLeakNaN) {
     // A NaN would be written as null; the fall times are null by design
     // when nothing fell.
     std::string json = toJson(report);
-    for (const std::string& none : {"\"fell_at\": null", "\"first_fall_t\": null"})
+    const std::string by_design[] = {"\"fell_at\": null", "\"first_fall_t\": null"};
+    for (const std::string& none : by_design)
       for (std::size_t at; (at = json.find(none)) != std::string::npos;)
         json.erase(at, none.size());
     EXPECT_EQ(json.find("null"), std::string::npos) << time_step;
