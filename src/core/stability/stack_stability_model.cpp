@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "stability/contact_classifier.h"
@@ -212,10 +213,65 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       froze = true;
     }
   }
+  admitRestingGroups(index, &resting, decisions);
   for (const BodyMotion* body : resting) {
     if (!body) continue;
     RestTracker::Mover& mover = rest_.record(body->handle);
     mover.next_judgement = mover.rest_time + options_.rest_time;
+  }
+}
+
+void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
+                                             std::vector<const BodyMotion*>* resting,
+                                             StabilityDecisions* decisions) {
+  // The candidates: at rest, not admitted alone, and not waiting where the
+  // model woke them (they freeze again only on statics with a margin).
+  std::map<BodyHandle, std::size_t> candidate;
+  for (std::size_t i = 0; i < resting->size(); ++i) {
+    const BodyMotion* body = (*resting)[i];
+    if (!body) continue;
+    const RestTracker::Mover& mover = rest_.record(body->handle);
+    if (mover.woken && (body->com - mover.woken_at).norm() < kMovedAway) continue;
+    candidate[body->handle] = i;
+  }
+  std::set<BodyHandle> seen;
+  for (const auto& [start, unused] : candidate) {
+    if (!seen.insert(start).second) continue;
+    std::vector<BodyHandle> group{start};
+    for (std::size_t next = 0; next < group.size(); ++next) {
+      for (const PairContact* contact : index.of(group[next])) {
+        const BodyHandle other = contact->a == group[next] ? contact->b : contact->a;
+        if (candidate.count(other) && seen.insert(other).second) group.push_back(other);
+      }
+    }
+    if (group.size() < 2) continue;
+    std::sort(group.begin(), group.end());
+    const SupporterTest frozen_or_member = [&](BodyHandle handle) {
+      return graph_.canSupport(handle) || std::binary_search(group.begin(), group.end(), handle);
+    };
+    std::vector<BodyMotion> bodies;
+    std::vector<BrickStability> stability(group.size());
+    bool held_from_outside = false;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      bodies.push_back(*(*resting)[candidate.at(group[i])]);
+      BrickStability& s = stability[i];
+      s.mass_above = bodies[i].mass;
+      s.external_loads = loads_.on(group[i], [this](BodyHandle source) { return moves(source); });
+      s.supports = supportPatches(bodies[i], index.of(group[i]), frozen_or_member, options_,
+                                  &s.side_contacts);
+      criterion_->evaluate(bodies[i], &s);
+      for (const std::vector<SupportPatch>* patches : {&s.supports, &s.side_contacts})
+        for (const SupportPatch& patch : *patches)
+          held_from_outside |= !std::binary_search(group.begin(), group.end(), patch.supporter);
+    }
+    // Bricks that touch nothing but each other cannot balance their weight.
+    if (!held_from_outside) continue;
+    std::vector<FreezeDecision> admitted;
+    if (!criterion_->admitsGroup(bodies, stability, &admitted)) continue;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
+      (*resting)[candidate.at(group[i])] = nullptr;
+    }
   }
 }
 

@@ -13,6 +13,8 @@
 
 namespace brick_stack_sim {
 
+class ContactIndex;
+
 /// A stability model that freezes bricks into a support graph (thesis 3.3),
 /// with the rule for stable and unstable left to a criterion. A moving brick
 /// at rest for `rest_time` on frozen bricks or the ground joins the stack
@@ -69,6 +71,12 @@ class StackStabilityModel : public StabilityModel {
   /// The step's movers: rest times, candidate supports, and freezing from the
   /// bottom up (a brick at rest on one that freezes now may freeze too).
   void advanceMovers(const StabilityInput& input, StabilityDecisions* decisions);
+  /// Of the movers at rest that did not freeze alone (`resting`, nulled as
+  /// they freeze), the groups that touch each other and something frozen or
+  /// the ground: each joins the stack as a whole when the criterion admits
+  /// it (a pile's planks leaning on planks that are themselves at rest).
+  void admitRestingGroups(const ContactIndex& index, std::vector<const BodyMotion*>* resting,
+                          StabilityDecisions* decisions);
   /// Evaluates `body` on its supports among `contacts` into `stability`;
   /// true (and `decision`) when the criterion admits it.
   bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
