@@ -170,36 +170,47 @@ void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions
     contacts.insert(contacts.end(), own.begin(), own.end());
   }
   const ContactIndex index(&contacts);
-  const SupporterTest frozen_or_member = [&](BodyHandle handle) {
-    return graph_.canSupport(handle) || std::binary_search(group.begin(), group.end(), handle);
-  };
   std::vector<BodyMotion> bodies;
-  std::vector<BrickStability> stability(group.size());
-  for (std::size_t i = 0; i < group.size(); ++i) {
-    bodies.push_back(unjudged_.at(group[i]).brick);
-    stability[i].mass_above = bodies[i].mass;
-    stability[i].supports = supportPatches(bodies[i], index.of(group[i]), frozen_or_member,
-                                           options_, &stability[i].side_contacts);
-    criterion_->evaluate(bodies[i], &stability[i]);
+  for (BodyHandle member : group) bodies.push_back(unjudged_.at(member).brick);
+  if (!admitTogether(bodies, index, false, decisions)) return;
+  for (BodyHandle member : group) {
+    unjudged_.erase(member);
+    touched_by_.erase(member);
+  }
+}
+
+bool StackStabilityModel::admitTogether(const std::vector<BodyMotion>& bodies,
+                                        const ContactIndex& index, bool measured_loads,
+                                        StabilityDecisions* decisions) {
+  std::vector<BodyHandle> group;
+  for (const BodyMotion& body : bodies) group.push_back(body.handle);
+  const auto member = [&](BodyHandle handle) {
+    return std::binary_search(group.begin(), group.end(), handle);
+  };
+  const SupporterTest frozen_or_member = [&](BodyHandle handle) {
+    return graph_.canSupport(handle) || member(handle);
+  };
+  std::vector<BrickStability> stability(bodies.size());
+  bool held_from_outside = false;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    BrickStability& s = stability[i];
+    s.mass_above = bodies[i].mass;
+    if (measured_loads)
+      s.external_loads = loads_.on(group[i], [this](BodyHandle source) { return moves(source); });
+    s.supports =
+        supportPatches(bodies[i], index.of(group[i]), frozen_or_member, options_, &s.side_contacts);
+    criterion_->evaluate(bodies[i], &s);
+    for (const std::vector<SupportPatch>* patches : {&s.supports, &s.side_contacts})
+      for (const SupportPatch& patch : *patches) held_from_outside |= !member(patch.supporter);
   }
   // Bricks that touch nothing but each other cannot balance their weight:
   // no statics to ask (a tower placed in the air).
-  const auto outside = [&](const SupportPatch& patch) {
-    return !std::binary_search(group.begin(), group.end(), patch.supporter);
-  };
-  const bool held_from_outside =
-      std::any_of(stability.begin(), stability.end(), [&](const BrickStability& s) {
-        return std::any_of(s.supports.begin(), s.supports.end(), outside) ||
-               std::any_of(s.side_contacts.begin(), s.side_contacts.end(), outside);
-      });
-  if (!held_from_outside) return;
+  if (!held_from_outside) return false;
   std::vector<FreezeDecision> admitted;
-  if (!criterion_->admitsGroup(bodies, stability, &admitted)) return;
-  for (std::size_t i = 0; i < group.size(); ++i) {
+  if (!criterion_->admitsGroup(bodies, stability, &admitted)) return false;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
     freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
-    unjudged_.erase(group[i]);
-    touched_by_.erase(group[i]);
-  }
+  return true;
 }
 
 PlacementEvaluation StackStabilityModel::evaluatePlacement(

@@ -235,7 +235,8 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
     candidate[body->handle] = i;
   }
   std::set<BodyHandle> seen;
-  for (const auto& [start, unused] : candidate) {
+  for (const auto& entry : candidate) {
+    const BodyHandle start = entry.first;
     if (!seen.insert(start).second) continue;
     std::vector<BodyHandle> group{start};
     for (std::size_t next = 0; next < group.size(); ++next) {
@@ -246,32 +247,10 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
     }
     if (group.size() < 2) continue;
     std::sort(group.begin(), group.end());
-    const SupporterTest frozen_or_member = [&](BodyHandle handle) {
-      return graph_.canSupport(handle) || std::binary_search(group.begin(), group.end(), handle);
-    };
     std::vector<BodyMotion> bodies;
-    std::vector<BrickStability> stability(group.size());
-    bool held_from_outside = false;
-    for (std::size_t i = 0; i < group.size(); ++i) {
-      bodies.push_back(*(*resting)[candidate.at(group[i])]);
-      BrickStability& s = stability[i];
-      s.mass_above = bodies[i].mass;
-      s.external_loads = loads_.on(group[i], [this](BodyHandle source) { return moves(source); });
-      s.supports = supportPatches(bodies[i], index.of(group[i]), frozen_or_member, options_,
-                                  &s.side_contacts);
-      criterion_->evaluate(bodies[i], &s);
-      for (const std::vector<SupportPatch>* patches : {&s.supports, &s.side_contacts})
-        for (const SupportPatch& patch : *patches)
-          held_from_outside |= !std::binary_search(group.begin(), group.end(), patch.supporter);
-    }
-    // Bricks that touch nothing but each other cannot balance their weight.
-    if (!held_from_outside) continue;
-    std::vector<FreezeDecision> admitted;
-    if (!criterion_->admitsGroup(bodies, stability, &admitted)) continue;
-    for (std::size_t i = 0; i < group.size(); ++i) {
-      freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
-      (*resting)[candidate.at(group[i])] = nullptr;
-    }
+    for (BodyHandle member : group) bodies.push_back(*(*resting)[candidate.at(member)]);
+    if (!admitTogether(bodies, index, true, decisions)) continue;
+    for (BodyHandle member : group) (*resting)[candidate.at(member)] = nullptr;
   }
 }
 

@@ -77,6 +77,13 @@ class StackStabilityModel : public StabilityModel {
   /// it (a pile's planks leaning on planks that are themselves at rest).
   void admitRestingGroups(const ContactIndex& index, std::vector<const BodyMotion*>* resting,
                           StabilityDecisions* decisions);
+  /// `bodies` (in handle order), at rest and touching each other as `index`
+  /// says, join the stack together when something frozen or the ground
+  /// holds them and the criterion admits them as a group; with
+  /// `measured_loads`, what moving bricks press on them counts. True when
+  /// they froze.
+  bool admitTogether(const std::vector<BodyMotion>& bodies, const ContactIndex& index,
+                     bool measured_loads, StabilityDecisions* decisions);
   /// Evaluates `body` on its supports among `contacts` into `stability`;
   /// true (and `decision`) when the criterion admits it.
   bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
