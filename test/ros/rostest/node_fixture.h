@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include <geometry_msgs/Pose.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <ros/service_traits.h>
@@ -26,6 +27,17 @@
 
 namespace brick_stack_sim {
 namespace test {
+
+/// A pose at (x, y, z) [m], turned by `yaw` [rad] about z, frame world.
+inline geometry_msgs::Pose poseAt(double x, double y, double z, double yaw = 0.0) {
+  geometry_msgs::Pose pose;
+  pose.position.x = x;
+  pose.position.y = y;
+  pose.position.z = z;
+  pose.orientation.z = std::sin(yaw / 2);
+  pose.orientation.w = std::cos(yaw / 2);
+  return pose;
+}
 
 /// The node's response in `reply`, expecting that the call reached the node.
 template <typename Response>
@@ -153,11 +165,7 @@ class NodeFixture : public ::testing::Test {
     PlaceBrick srv;
     srv.request.id = id;
     srv.request.type = type;
-    srv.request.pose.position.x = x;
-    srv.request.pose.position.y = y;
-    srv.request.pose.position.z = z;
-    srv.request.pose.orientation.z = std::sin(yaw / 2);
-    srv.request.pose.orientation.w = std::cos(yaw / 2);
+    srv.request.pose = poseAt(x, y, z, yaw);
     return call(srv);
   }
 

@@ -33,15 +33,7 @@ constexpr double kThickness = test::kKaplaThickness;
 /// How long the placer may take to act on a feedback [s] of wall time.
 constexpr double kActionTimeout = 10.0;
 
-geometry_msgs::Pose pose(double x, double y, double z, double yaw = 0.0) {
-  geometry_msgs::Pose p;
-  p.position.x = x;
-  p.position.y = y;
-  p.position.z = z;
-  p.orientation.z = std::sin(yaw / 2);
-  p.orientation.w = std::cos(yaw / 2);
-  return p;
-}
+using test::poseAt;
 
 double yawOf(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
@@ -90,7 +82,7 @@ class BrickPlacer : public test::NodeFixture {
     const client::Reply<ResetScene::Response> reset = sim_->reset();
     ASSERT_TRUE(reset.reached) << reset.message;
     ASSERT_TRUE(reset.response.success) << reset.response.message;
-    select("kapla", pose(0.0, 0.0, 0.1), teleop::kTypeMenu);
+    select("kapla", poseAt(0.0, 0.0, 0.1), teleop::kTypeMenu);
   }
 
   /// The id of the menu entry `title` (under the entry `parent`, if given).
@@ -191,7 +183,7 @@ class BrickPlacer : public test::NodeFixture {
 };
 
 TEST_F(BrickPlacer, PlaceHereRestsOnTheTable) {
-  select(teleop::kPlaceHereEntry, pose(0.1, 0.05, 0.08, 0.3));
+  select(teleop::kPlaceHereEntry, poseAt(0.1, 0.05, 0.08, 0.3));
   const std::optional<Brick> placed = newBrick({});
   ASSERT_TRUE(placed) << "no brick appeared";
   EXPECT_EQ(placed->type, "kapla");
@@ -207,7 +199,7 @@ TEST_F(BrickPlacer, PlaceHereRestsOnABrickPlacedFirst) {
   ASSERT_TRUE(place("base", 0.0, 0.0, 0.5 * kThickness).success);
   const std::vector<Brick> before = bricks();
   // Crosswise over it, 10 cm up.
-  select(teleop::kPlaceHereEntry, pose(0.02, 0.0, 0.1, M_PI / 2));
+  select(teleop::kPlaceHereEntry, poseAt(0.02, 0.0, 0.1, M_PI / 2));
   const std::optional<Brick> placed = newBrick(before);
   ASSERT_TRUE(placed) << "no brick appeared";
   EXPECT_NEAR(placed->pose.position.x, 0.02, 1e-6);
@@ -219,7 +211,7 @@ TEST_F(BrickPlacer, PlaceHereRestsOnABrickPlacedFirst) {
 
 TEST_F(BrickPlacer, DropFromHereKeepsThePoseAndFalls) {
   ASSERT_TRUE(setPaused(true));
-  select(teleop::kDropFromHereEntry, pose(-0.1, -0.1, 0.06));
+  select(teleop::kDropFromHereEntry, poseAt(-0.1, -0.1, 0.06));
   const std::optional<Brick> dropped = newBrick({});
   ASSERT_TRUE(dropped) << "no brick appeared";
   EXPECT_NEAR(dropped->pose.position.z, 0.06, 1e-9) << "not placed where the ghost was";
@@ -234,8 +226,8 @@ TEST_F(BrickPlacer, DropFromHereKeepsThePoseAndFalls) {
 }
 
 TEST_F(BrickPlacer, TypeMenuChangesTheBrick) {
-  select("cube", pose(0.15, -0.1, 0.05), teleop::kTypeMenu);
-  select(teleop::kPlaceHereEntry, pose(0.15, -0.1, 0.05));
+  select("cube", poseAt(0.15, -0.1, 0.05), teleop::kTypeMenu);
+  select(teleop::kPlaceHereEntry, poseAt(0.15, -0.1, 0.05));
   const std::optional<Brick> placed = newBrick({});
   ASSERT_TRUE(placed) << "no brick appeared";
   EXPECT_EQ(placed->type, "cube");
@@ -248,7 +240,7 @@ TEST_F(BrickPlacer, TurnTurnsTheGhostAboutZ) {
     std::lock_guard<std::mutex> lock(mutex_);
     ghost_poses_.clear();
   }
-  select(teleop::kTurnEntry, pose(0.2, 0.1, 0.1, 0.25));
+  select(teleop::kTurnEntry, poseAt(0.2, 0.1, 0.1, 0.25));
   geometry_msgs::Pose turned;
   ASSERT_TRUE(waitFor(
       [&] {
@@ -270,25 +262,25 @@ TEST_F(BrickPlacer, ARefusalIsShownWithTheSimulatorsMessage) {
   // The simulator's own words for a brick inside "block".
   PlaceBrick direct;
   direct.request.type = "kapla";
-  direct.request.pose = pose(0.0, 0.2, 0.5 * kThickness);
+  direct.request.pose = poseAt(0.0, 0.2, 0.5 * kThickness);
   ASSERT_FALSE(call(direct).success);
   ASSERT_FALSE(direct.response.message.empty());
 
-  select(teleop::kDropFromHereEntry, pose(0.0, 0.2, 0.5 * kThickness));
+  select(teleop::kDropFromHereEntry, poseAt(0.0, 0.2, 0.5 * kThickness));
   EXPECT_TRUE(warned(direct.response.message))
       << "no WARN from the placer with: " << direct.response.message;
   EXPECT_EQ(bricks().size(), 1u);
 }
 
 TEST_F(BrickPlacer, ANonFiniteGhostPoseIsRefused) {
-  geometry_msgs::Pose bad = pose(0.0, 0.0, 0.1);
+  geometry_msgs::Pose bad = poseAt(0.0, 0.0, 0.1);
   bad.position.y = std::numeric_limits<double>::quiet_NaN();
   select(teleop::kPlaceHereEntry, bad);
   EXPECT_TRUE(warned("ghost pose.position.y"));
   ros::WallDuration(0.5).sleep();
   EXPECT_TRUE(bricks().empty());
   // The placer still works.
-  select(teleop::kPlaceHereEntry, pose(0.0, 0.0, 0.1));
+  select(teleop::kPlaceHereEntry, poseAt(0.0, 0.0, 0.1));
   EXPECT_TRUE(newBrick({}));
 }
 
@@ -300,7 +292,7 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
     ghost_poses_.clear();
   }
   // The ghost 5 cm above "near" and 2 cm aside: "near" is the nearest centre.
-  select(teleop::kGraspEntry, pose(0.1, 0.12, 0.05));
+  select(teleop::kGraspEntry, poseAt(0.1, 0.12, 0.05));
   ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.state == Brick::HELD; }))
       << "near was not grasped";
   EXPECT_NE(brick("far")->state, Brick::HELD);
@@ -315,7 +307,7 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
       << "the ghost did not move onto the grasped brick";
 
   // Dragging the ghost 5 cm up carries the brick there.
-  drag(pose(0.1, 0.1, 0.05));
+  drag(poseAt(0.1, 0.1, 0.05));
   ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.pose.position.z > 0.0499; }))
       << "the held brick did not follow the ghost";
   const std::optional<Brick> lifted = brick("near");
@@ -329,7 +321,7 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
     std::lock_guard<std::mutex> lock(mutex_);
     ghost_poses_.clear();
   }
-  drag(pose(0.1, 0.1, -0.05));
+  drag(poseAt(0.1, 0.1, -0.05));
   EXPECT_TRUE(waitFor(
       [&] {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -343,7 +335,7 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
   })) << "the held brick did not come down onto the table top";
 
   // Released at rest, it falls back onto the table.
-  select(teleop::kReleaseEntry, pose(0.1, 0.1, 0.05));
+  select(teleop::kReleaseEntry, poseAt(0.1, 0.1, 0.05));
   ASSERT_TRUE(waitForBrick("near", [](const Brick& b) { return b.state != Brick::HELD; }))
       << "near was not released";
   EXPECT_TRUE(waitForBrick("near", [](const Brick& b) {
@@ -352,7 +344,7 @@ TEST_F(BrickPlacer, GraspDragAndReleaseThroughTheMenu) {
   EXPECT_NEAR(brick("near")->pose.position.x, 0.1, 5e-3);
 
   // With nothing held, Release says so and changes nothing.
-  select(teleop::kReleaseEntry, pose(0.1, 0.1, 0.05));
+  select(teleop::kReleaseEntry, poseAt(0.1, 0.1, 0.05));
   EXPECT_TRUE(warned("no brick is held"));
 }
 
@@ -367,7 +359,7 @@ TEST_F(BrickPlacer, AGraspRefusalIsShownWithTheSimulatorsMessage) {
   ASSERT_FALSE(direct.response.message.empty());
 
   // Nearer "bottom" (3.9 mm) than "top" (11.7 mm).
-  select(teleop::kGraspEntry, pose(-0.1, 0.1, 0.0));
+  select(teleop::kGraspEntry, poseAt(-0.1, 0.1, 0.0));
   EXPECT_TRUE(warned(direct.response.message))
       << "no WARN from the placer with: " << direct.response.message;
   for (const Brick& b : bricks()) EXPECT_NE(b.state, Brick::HELD) << b.id;

@@ -41,17 +41,8 @@ constexpr double kTowerTop = kTowerLayers * kKaplaThickness;
 /// A call that takes longer means the node hangs: the test fails instead [s].
 constexpr double kCallTimeout = 120.0;
 
+using test::poseAt;
 using test::within;
-
-geometry_msgs::Pose poseAt(double x, double y, double z, double yaw) {
-  geometry_msgs::Pose pose;
-  pose.position.x = x;
-  pose.position.y = y;
-  pose.position.z = z;
-  pose.orientation.z = std::sin(yaw / 2);
-  pose.orientation.w = std::cos(yaw / 2);
-  return pose;
-}
 
 /// A brick of layer `layer` of the two-per-layer tower (test::towerSlot),
 /// `lift` [m] above where it rests.
