@@ -11,18 +11,13 @@
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/simulation/simulation.h"
 #include "support/kapla.h"
+#include "support/scenes.h"
 
 namespace brick_stack_sim {
 namespace {
 
-constexpr double kCube = 0.0234;  ///< The package's cube: full edge [m] (urdf/bricks.urdf).
-
-Scene parsed(const std::string& yaml) {
-  Scene scene;
-  const Status s = parseScene(yaml, "sweep", test::packageTypes(), &scene);
-  EXPECT_TRUE(s.ok) << s.message;
-  return scene;
-}
+using test::kCube;
+using test::parsed;
 
 StaticsLabel labelOf(const std::string& yaml, const WorldOptions& world = WorldOptions()) {
   StaticsLabel label;

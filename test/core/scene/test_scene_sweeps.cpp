@@ -10,18 +10,13 @@
 
 #include "brick_stack_sim/core/scene/generators.h"
 #include "support/kapla.h"
+#include "support/scenes.h"
 
 namespace brick_stack_sim {
 namespace {
 
-constexpr double kCube = 0.0234;  ///< The package's cube: full edge [m] (urdf/bricks.urdf).
-
-Scene parsed(const std::string& yaml) {
-  Scene scene;
-  const Status s = parseScene(yaml, "sweep", test::packageTypes(), &scene);
-  EXPECT_TRUE(s.ok) << s.message;
-  return scene;
-}
+using test::kCube;
+using test::parsed;
 
 /// Refused, with every word of `expected` in the message.
 void expectRefused(const std::string& yaml, const std::vector<std::string>& expected) {
