@@ -20,14 +20,12 @@ constexpr std::size_t kMaxPlanSteps = 10000;
 /// What `duration` 0 simulates after the last step [s]: long enough for a
 /// plank that tips to have fallen, short enough to answer quickly.
 constexpr double kDefaultPlanSettleTime = 2.0;
-/// What `fall_distance` 0 means [m]: as Plan's default.
-constexpr double kDefaultPlanFallDistance = 0.01;
 
 /// A ~simulate_plan request as a Plan, checked field by field before anything
 /// runs: the step count (at most kMaxPlanSteps), each step's action (PLACE to
 /// WAIT), time, pose (a unit quaternion), twist, impulse and point, the
 /// duration (0: the last step's time + kDefaultPlanSettleTime) and the fall
-/// distance (0: kDefaultPlanFallDistance), then the order of the times and
+/// distance (0: kDefaultFallDistance), then the order of the times and
 /// the limits (checkPlan). The mode is not read here. A refusal names the
 /// field by its index in `steps`, counted from 0 ("steps[3].pose: ..."); the
 /// core's own messages count steps from 1 ("step 4 (place 'b3' at 1.5 s)").

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "brick_stack_sim/core/scene/scene.h"
+#include "brick_stack_sim/core/simulation/plan.h"
 #include "brick_stack_sim/core/simulation/scene_player.h"
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/types/brick.h"
@@ -15,13 +16,6 @@
 
 namespace brick_stack_sim {
 
-/// Default of RunOptions::fall_distance [m]: a centimetre, far beyond what a
-/// brick that stays where it was laid ever drifts (micrometres).
-constexpr double kDefaultFallDistance = 0.01;
-/// Default of RunOptions::fall_angle [rad], about 6 degrees: a plank that
-/// tips off the one below turns by about its thickness over its half length
-/// (8 degrees for KAPLA) while its centre drops less than a centimetre.
-constexpr double kDefaultFallAngle = 0.1;
 /// Sim time between the runner's looks for fallen bricks [s] (every step
 /// when the step is longer): a fall's time is known to within it.
 constexpr double kFallCheckInterval = 0.01;

@@ -33,6 +33,16 @@ struct PlannedStep {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
 };
 
+/// When a brick has fallen, in plans and in the batch runner's reports: once
+/// its centre is farther than this from where it was laid [m], a centimetre,
+/// far beyond what a brick that stays where it was laid ever drifts
+/// (micrometres).
+constexpr double kDefaultFallDistance = 0.01;
+/// Or once it has turned farther than this [rad], about 6 degrees: a plank
+/// that tips off the one below turns by about its thickness over its half
+/// length (8 degrees for KAPLA) while its centre drops less than a centimetre.
+constexpr double kDefaultFallAngle = 0.1;
+
 /// A sequence of steps and how long to simulate.
 struct Plan {
   std::vector<PlannedStep> steps;
@@ -40,10 +50,10 @@ struct Plan {
   double duration = 0.0;
   /// A brick has fallen when it ends farther than this from where it was
   /// when the plan started, or from where the plan placed it [m].
-  double fall_distance = 0.01;
+  double fall_distance = kDefaultFallDistance;
   /// Or when it has turned farther than this from how it started [rad]: a
   /// plank that tips off the one below may end less than a centimetre away.
-  double fall_angle = 0.1;
+  double fall_angle = kDefaultFallAngle;
 };
 
 /// The most a plan may simulate [s]: its duration is checked against it.
