@@ -104,8 +104,7 @@ Status fromMsg(const SimulatePlan::Request& request, Plan* plan) {
                          ": must be >= 0 m (0: 0.01 m)");
   const double last = result.steps.empty() ? 0.0 : result.steps.back().at;
   result.duration = request.duration > 0.0 ? request.duration : last + kDefaultPlanSettleTime;
-  result.fall_distance =
-      request.fall_distance > 0.0 ? request.fall_distance : kDefaultFallDistance;
+  result.fall_distance = request.fall_distance > 0.0 ? request.fall_distance : kDefaultFallDistance;
   // Times in order, within the longest plan; the duration after the last step.
   if (Status valid = checkPlan(result); !valid) return valid;
   *plan = std::move(result);
