@@ -19,6 +19,35 @@ struct Overlapping : public btBroadphaseAabbCallback {
 
 }  // namespace
 
+void BrickDynamicsWorld::updateBodyAabb(btCollisionObject* object) {
+  if (object->isStaticObject()) {
+    updateSingleAabb(object);
+    return;
+  }
+  const btCollisionShape& shape = *object->getCollisionShape();
+  const btScalar reach = shape.getContactBreakingThreshold(gContactBreakingThreshold);
+  const btVector3 grow(reach, reach, reach);
+  btVector3 low, high;
+  shape.getAabb(object->getWorldTransform(), low, high);
+  // As Bullet does with continuous detection on: the box covers where the
+  // body was interpolated from too.
+  if (getDispatchInfo().m_useContinuous) {
+    btVector3 from_low, from_high;
+    shape.getAabb(object->getInterpolationWorldTransform(), from_low, from_high);
+    low.setMin(from_low);
+    high.setMax(from_high);
+  }
+  m_broadphasePairCache->setAabb(object->getBroadphaseHandle(), low - grow, high + grow,
+                                 m_dispatcher1);
+}
+
+void BrickDynamicsWorld::updateAabbs() {
+  for (int i = 0; i < m_collisionObjects.size(); ++i) {
+    btCollisionObject* object = m_collisionObjects[i];
+    if (m_forceUpdateAllAabbs || object->isActive()) updateBodyAabb(object);
+  }
+}
+
 bool BrickDynamicsWorld::sweeps(const btRigidBody& body, const btTransform& predicted) {
   const btScalar threshold = body.getCcdSquareMotionThreshold();
   const btCollisionShape& shape = *body.getCollisionShape();

@@ -10,6 +10,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_scene.h"
 
@@ -43,7 +44,7 @@ struct BulletScene::Impl {
   // reused, and a node that places and removes bricks for hours would keep
   // an entry for every brick it ever had.
   std::unordered_map<BodyHandle, Body> bodies;
-  std::unique_ptr<btDiscreteDynamicsWorld> world;
+  std::unique_ptr<BrickDynamicsWorld> world;
 
   explicit Impl(const WorldOptions& world_options);
   ~Impl();
