@@ -23,7 +23,7 @@ if first["nonfinite"] != 0: problems.append(f"nonfinite {first['nonfinite']}")
 if first["lost"] != 0: problems.append(f"lost {first['lost']}")
 if first["missing"] != 0: problems.append(f"missing {first['missing']}")
 if len(sys.argv) > 3:
-    strip = lambda t: re.sub(r'"(wall_time|stage_seconds)": (\{[^}]*\}|[^,]*),', "", t)
+    strip = lambda t: re.sub(r'"(wall_time|stage_seconds|bullet_stages)": (\{[^}]*\}|[^,]*),', "", t)
     if strip(open(sys.argv[2]).read()) != strip(open(sys.argv[3]).read()):
         problems.append("second run differs")
 print(f"{name}: {first['sim_time']:.0f} s simulated, {len(first['bricks'])} bricks, "

@@ -100,6 +100,7 @@ void accumulate(const TimedRun& run, BenchRow* row) {
   row->bullet_seconds += r.cost.bullet_seconds;
   row->contact_seconds += r.cost.contact_seconds;
   row->stability_seconds += r.cost.stability_seconds;
+  row->bullet_stages += r.cost.bullet_stages;
   row->bullet_steps += r.cost.bullet_steps;
   row->awake_brick_steps += r.cost.awake_brick_steps;
   row->steps += r.cost.steps;

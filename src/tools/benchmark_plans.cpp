@@ -171,7 +171,8 @@ BenchPlan fullBenchPlan() {
 std::string benchCsvHeader() {
   return "case,scene,bricks,mode,sleeping,time_step,iterations,sim_time,wall_time,"
          "wall_ms_per_sim_s,real_time_factor,steps,bullet_steps,awake_brick_steps,"
-         "bullet_share,contact_share,stability_share,drift_mm,penetration_mm,"
+         "bullet_share,contact_share,stability_share,broadphase_share,narrowphase_share,"
+         "islands_share,solver_share,integration_share,drift_mm,penetration_mm,"
          "collapse_layer_error,threshold_error_pct,divergence_mm,nonfinite,lost,refused,"
          "motion_measured,motion_expected,motion_error_pct\n";
 }
@@ -189,18 +190,21 @@ std::string toCsv(const BenchRow& r) {
   char line[1024];
   std::snprintf(
       line, sizeof line,
-      "%s,%s,%zu,%s,%d,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.4f,%s,%s,%s,%s,"
-      "%s,%llu,%zu,%zu,%s,%s,%s\n",
+      "%s,%s,%zu,%s,%d,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,"
+      "%.4f,%.4f,%s,%s,%s,%s,%s,%llu,%zu,%zu,%s,%s,%s\n",
       r.label.c_str(), r.scene.c_str(), r.bricks, r.setting.mode_label.c_str(),
       r.setting.sleeping ? 1 : 0, r.setting.time_step, r.setting.iterations, r.sim_time,
       r.wall_time, r.sim_time > 0.0 ? 1000.0 * r.wall_time / r.sim_time : 0.0,
       r.wall_time > 0.0 ? r.sim_time / r.wall_time : 0.0, r.steps, r.bullet_steps,
       r.awake_brick_steps, share(r.bullet_seconds), share(r.contact_seconds),
-      share(r.stability_seconds), optional(r.drift_mm, -1.0).c_str(),
-      optional(r.penetration_mm, -1.0).c_str(), optional(r.collapse_layer_error, -1e9).c_str(),
-      optional(r.threshold_error_pct, -1.0).c_str(), optional(r.divergence_mm, -1.0).c_str(),
-      r.nonfinite, r.lost, r.refused, optional(r.motion_measured, -1.0).c_str(),
-      optional(r.motion_expected, -1.0).c_str(), optional(r.motion_error_pct, -1.0).c_str());
+      share(r.stability_seconds), share(r.bullet_stages.broadphase),
+      share(r.bullet_stages.narrowphase), share(r.bullet_stages.islands),
+      share(r.bullet_stages.solver), share(r.bullet_stages.integration),
+      optional(r.drift_mm, -1.0).c_str(), optional(r.penetration_mm, -1.0).c_str(),
+      optional(r.collapse_layer_error, -1e9).c_str(), optional(r.threshold_error_pct, -1.0).c_str(),
+      optional(r.divergence_mm, -1.0).c_str(), r.nonfinite, r.lost, r.refused,
+      optional(r.motion_measured, -1.0).c_str(), optional(r.motion_expected, -1.0).c_str(),
+      optional(r.motion_error_pct, -1.0).c_str());
   return line;
 }
 

@@ -7,8 +7,9 @@
 
 #include "brick_stack_sim/core/types/brick.h"
 
-#include "brick_stack_sim/core/types/brick_type.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/core/types/bullet_stage_seconds.h"
 #include "brick_stack_sim/core/types/world_options.h"
 #include "brick_stack_sim/tools/motion_cases.h"
 
@@ -36,9 +37,9 @@ struct BenchCase {
   std::string label;  ///< Row label, e.g. "tower25".
   std::string scene;  ///< Scene name or path (for kHarmonic: the brick count is `bricks`).
   BenchMetric metric = BenchMetric::kSettled;
-  double duration = 10.0;  ///< Sim time per run [s].
-  int bricks = 10;         ///< kHarmonic: stack height.
-  double offset = 0.011;   ///< kSlantTower: layer shift [m].
+  double duration = 10.0;                  ///< Sim time per run [s].
+  int bricks = 10;                         ///< kHarmonic: stack height.
+  double offset = 0.011;                   ///< kSlantTower: layer shift [m].
   MotionCase motion = MotionCase::kSlide;  ///< kMotion: which.
   /// Runs of a short case; the fastest counts, as the least disturbed by the
   /// rest of a shared machine (kSettled and kDrop).
@@ -61,6 +62,7 @@ struct BenchRow {
   double sim_time = 0.0;   ///< [s], summed over the runs of the row.
   double wall_time = 0.0;  ///< Stepping wall time [s], setup excluded.
   double bullet_seconds = 0.0, contact_seconds = 0.0, stability_seconds = 0.0;
+  BulletStageSeconds bullet_stages;  ///< Parts of bullet_seconds [s].
   unsigned long long bullet_steps = 0, awake_brick_steps = 0, steps = 0;
   double drift_mm = -1.0;  ///< -1: not measured by this case.
   double penetration_mm = -1.0;

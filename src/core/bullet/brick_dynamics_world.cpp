@@ -1,5 +1,6 @@
 #include "bullet/brick_dynamics_world.h"
 
+#include <chrono>
 #include <vector>
 
 #include "bullet/time_of_impact.h"
@@ -7,6 +8,20 @@
 namespace brick_stack_sim {
 
 namespace {
+
+/// Adds the wall time of its scope to `*total`.
+class StageTimer {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit StageTimer(Clock::duration* total) : total_(total), start_(Clock::now()) {}
+  ~StageTimer() { *total_ += Clock::now() - start_; }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  Clock::duration* total_;
+  Clock::time_point start_;
+};
 
 /// Every body whose box overlaps the box it is given.
 struct Overlapping : public btBroadphaseAabbCallback {
@@ -41,11 +56,46 @@ void BrickDynamicsWorld::updateBodyAabb(btCollisionObject* object) {
                                  m_dispatcher1);
 }
 
+BulletStageSeconds BrickDynamicsWorld::stageSeconds() const {
+  auto seconds = [](Clock::duration ticks) { return std::chrono::duration<double>(ticks).count(); };
+  return BulletStageSeconds{seconds(ticks_.broadphase), seconds(ticks_.narrowphase),
+                            seconds(ticks_.islands), seconds(ticks_.solver),
+                            seconds(ticks_.integration)};
+}
+
 void BrickDynamicsWorld::updateAabbs() {
+  const StageTimer timer(&ticks_.broadphase);
   for (int i = 0; i < m_collisionObjects.size(); ++i) {
     btCollisionObject* object = m_collisionObjects[i];
     if (m_forceUpdateAllAabbs || object->isActive()) updateBodyAabb(object);
   }
+}
+
+void BrickDynamicsWorld::computeOverlappingPairs() {
+  const StageTimer timer(&ticks_.broadphase);
+  btDiscreteDynamicsWorld::computeOverlappingPairs();
+}
+
+void BrickDynamicsWorld::performDiscreteCollisionDetection() {
+  const Clock::duration broadphase_before = ticks_.broadphase;
+  const Clock::time_point start = Clock::now();
+  btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
+  ticks_.narrowphase += (Clock::now() - start) - (ticks_.broadphase - broadphase_before);
+}
+
+void BrickDynamicsWorld::calculateSimulationIslands() {
+  const StageTimer timer(&ticks_.islands);
+  btDiscreteDynamicsWorld::calculateSimulationIslands();
+}
+
+void BrickDynamicsWorld::solveConstraints(btContactSolverInfo& solver_info) {
+  const StageTimer timer(&ticks_.solver);
+  btDiscreteDynamicsWorld::solveConstraints(solver_info);
+}
+
+void BrickDynamicsWorld::predictUnconstraintMotion(btScalar time_step) {
+  const StageTimer timer(&ticks_.integration);
+  btDiscreteDynamicsWorld::predictUnconstraintMotion(time_step);
 }
 
 bool BrickDynamicsWorld::sweeps(const btRigidBody& body, const btTransform& predicted) {
@@ -105,6 +155,7 @@ bool BrickDynamicsWorld::stepHits(btRigidBody* body, btScalar time_step, btTrans
 }
 
 void BrickDynamicsWorld::createPredictiveContacts(btScalar time_step) {
+  const StageTimer timer(&ticks_.integration);
   releasePredictiveContacts();
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
@@ -136,6 +187,7 @@ void BrickDynamicsWorld::createPredictiveContacts(btScalar time_step) {
 }
 
 void BrickDynamicsWorld::integrateTransforms(btScalar time_step) {
+  const StageTimer timer(&ticks_.integration);
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
     btTransform predicted;

@@ -395,8 +395,13 @@ bool BulletScene::firstContact(BodyHandle a, const Eigen::Isometry3d& from,
 }
 
 void BulletScene::step(double dt) {
+  impl_->world->resetStageSeconds();
   // maxSubSteps = 0: exactly one step of exactly dt, no interpolation.
   impl_->world->stepSimulation(dt, 0, dt);
+}
+
+BulletStageSeconds BulletScene::lastStepStageSeconds() const {
+  return impl_->world->stageSeconds();
 }
 
 const btCollisionDispatcher& BulletScene::dispatcher() const { return *impl_->dispatcher; }

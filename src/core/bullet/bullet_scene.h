@@ -11,6 +11,7 @@
 
 #include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/core/types/bullet_stage_seconds.h"
 #include "brick_stack_sim/core/types/world_options.h"
 #include "physics/body_handle.h"
 
@@ -131,6 +132,8 @@ class BulletScene {
 
   /// Exactly one step of `dt` [s]: no substeps, no interpolation.
   void step(double dt);
+  /// Wall time of the stages of the last step() [s]; zero before the first.
+  BulletStageSeconds lastStepStageSeconds() const;
 
   /// The contact manifolds of the last step, for the contact reader.
   const btCollisionDispatcher& dispatcher() const;

@@ -296,6 +296,17 @@ void writeRunCost(const RunReport& r, JsonWriter& json) {
   json.key("contacts").value(r.cost.contact_seconds);
   json.key("stability").value(r.cost.stability_seconds);
   json.endObject();
+  // Bullet's own step by stage, also wall time: parts of stage_seconds'
+  // bullet, so beside stage_seconds rather than in it, whose stages add up
+  // to the step.
+  const BulletStageSeconds& stages = r.cost.bullet_stages;
+  json.key("bullet_stages").beginObject();
+  json.key("broadphase").value(stages.broadphase);
+  json.key("narrowphase").value(stages.narrowphase);
+  json.key("islands").value(stages.islands);
+  json.key("solver").value(stages.solver);
+  json.key("integration").value(stages.integration);
+  json.endObject();
 }
 
 /// Each brick's final pose and how far it ended from where it was placed.

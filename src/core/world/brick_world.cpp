@@ -69,6 +69,7 @@ void advanceBullet(WorldState* w, const StepContext& step) {
   moveHeldBricks(w);
   if (w->model) prepareFrozenColliders(w);
   w->scene.step(w->options.time_step);
+  w->cost.bullet_stages += w->scene.lastStepStageSeconds();
   ++w->cost.bullet_steps;
   w->cost.awake_brick_steps += step.awake;
   guardMovers(w);

@@ -132,5 +132,29 @@ TEST(BrickWorld, CostCountsAwakeBricks) {
   EXPECT_EQ(world->cost().nonfinite, 0u);
 }
 
+// Wall times differ between runs: only what holds on any machine is checked.
+TEST(BrickWorld, BulletStagesArePartsOfBulletsTime) {
+  auto world = makeWorld();
+  // Three bricks dropped onto the table and onto each other: they touch.
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d at(0.001 * i, 0.0, kKaplaThickness * (i + 0.5) + 0.002 * (i + 1));
+    ASSERT_TRUE(world->addBrick(placement("", at, 0.3 * i)).ok);
+  }
+  runFor(world.get(), 0.3);
+  const CostCounters& cost = world->cost();
+  const BulletStageSeconds& stages = cost.bullet_stages;
+  for (double seconds :
+       {stages.broadphase, stages.narrowphase, stages.islands, stages.solver, stages.integration}) {
+    EXPECT_TRUE(std::isfinite(seconds));
+    EXPECT_GE(seconds, 0.0);
+  }
+  EXPECT_LE(stages.total(), cost.bullet_seconds + 1e-9);
+  EXPECT_GT(stages.narrowphase, 0.0);
+  EXPECT_GT(stages.solver, 0.0);
+  // A copy goes on from the counters it was copied with.
+  const std::unique_ptr<BrickWorld> copy = world->copy();
+  EXPECT_EQ(copy->cost().bullet_stages.solver, stages.solver);
+}
+
 }  // namespace
 }  // namespace brick_stack_sim

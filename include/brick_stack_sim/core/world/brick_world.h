@@ -10,6 +10,7 @@
 #include "brick_stack_sim/core/status.h"
 #include "brick_stack_sim/core/types/brick.h"
 #include "brick_stack_sim/core/types/brick_type.h"
+#include "brick_stack_sim/core/types/bullet_stage_seconds.h"
 #include "brick_stack_sim/core/types/sim_event.h"
 #include "brick_stack_sim/core/types/world_options.h"
 
@@ -31,6 +32,9 @@ struct CostCounters {
   double bullet_seconds = 0.0;     ///< Advancing Bullet, with its colliders and the guard.
   double contact_seconds = 0.0;    ///< Reading contacts from Bullet's manifolds.
   double stability_seconds = 0.0;  ///< The stability model and freeze / wake.
+  /// Bullet's own step, by stage [s]: part of bullet_seconds, which also
+  /// holds the colliders' preparation, the guard and Bullet's bookkeeping.
+  BulletStageSeconds bullet_stages;
 };
 
 /// The answer to "would a brick at rest here be stable?" (evaluatePlacement).
