@@ -31,6 +31,20 @@ btScalar combinedFriction(const btCollisionObject* a, const btCollisionObject* b
   return std::sqrt(a->getFriction() * b->getFriction());
 }
 
+/// The sequential-impulse solver's settings for bricks.
+void configureSolver(const WorldOptions& options, btContactSolverInfo* solver_info) {
+  solver_info->m_numIterations = options.solver_iterations;
+  // Split impulse corrects penetration without feeding velocity back into the
+  // stack. Bullet only splits below its threshold (-4 cm by default, five brick
+  // thicknesses, so never at this scale); ours is scaled to the brick.
+  solver_info->m_splitImpulse = 1;
+  solver_info->m_splitImpulsePenetrationThreshold = options.split_impulse_penetration_threshold;
+  solver_info->m_erp = options.erp;
+  solver_info->m_erp2 = options.erp;
+  // Never SOLVER_RANDMIZE_ORDER: the same inputs must give the same bits.
+  solver_info->m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD;
+}
+
 }  // namespace
 
 BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_options) {
@@ -53,17 +67,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   world->setForceUpdateAllAabbs(false);
   world->getDispatchInfo().m_deterministicOverlappingPairs = true;
 
-  btContactSolverInfo& solver_info = world->getSolverInfo();
-  solver_info.m_numIterations = options.solver_iterations;
-  // Split impulse corrects penetration without feeding velocity back into the
-  // stack. Bullet only splits below its threshold (-4 cm by default, five brick
-  // thicknesses, so never at this scale); ours is scaled to the brick.
-  solver_info.m_splitImpulse = 1;
-  solver_info.m_splitImpulsePenetrationThreshold = options.split_impulse_penetration_threshold;
-  solver_info.m_erp = options.erp;
-  solver_info.m_erp2 = options.erp;
-  // Never SOLVER_RANDMIZE_ORDER: the same inputs must give the same bits.
-  solver_info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD;
+  configureSolver(options, &world->getSolverInfo());
 
   // Bullet keeps these two as globals; every world sets the same values.
   gCalculateCombinedFrictionCallback = &combinedFriction;
