@@ -208,9 +208,28 @@ bool StackStabilityModel::admitTogether(const std::vector<BodyMotion>& bodies,
   if (!held_from_outside) return false;
   std::vector<FreezeDecision> admitted;
   if (!criterion_->admitsGroup(bodies, stability, &admitted)) return false;
+  if (measured_loads && !standsJoined(bodies, stability, admitted)) return false;
   for (std::size_t i = 0; i < bodies.size(); ++i)
     freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
   return true;
+}
+
+bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
+                                       const std::vector<BrickStability>& stability,
+                                       const std::vector<FreezeDecision>& admitted) const {
+  std::vector<BodyHandle> supporters;
+  for (const BrickStability& s : stability)
+    for (BodyHandle supporter : supportersOf(s))
+      if (graph_.contains(supporter)) supporters.push_back(supporter);
+  SupportGraph what_if = graph_.componentsOf(supporters);
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
+  // While a brick that moves still presses on it, what statics says now
+  // may not hold a step on (a collapse that has not ended).
+  for (BodyHandle brick : what_if.bricks())
+    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
+      return false;
+  return criterion_->check(&what_if, what_if.bricks()).empty();
 }
 
 PlacementEvaluation StackStabilityModel::evaluatePlacement(

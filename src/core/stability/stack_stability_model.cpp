@@ -214,10 +214,23 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
     }
   }
   admitRestingGroups(index, &resting, decisions);
+  // What was refused is asked again on the model's clock, one to two rest
+  // windows on, at a tick shared by every mover: bricks that only stand
+  // together are then due together, and their group is judged. On clocks
+  // of their own they were refused one by one for ever.
+  double wait = options_.rest_time;
+  if (input.dt > 0.0) {
+    const std::uint64_t window = std::max<std::uint64_t>(
+        1, static_cast<std::uint64_t>(std::llround(options_.rest_time / input.dt)));
+    const std::uint64_t tick = (steps_ / window + 2) * window;
+    // Half a step short, so that sums of dt that round differently still
+    // fall due in the tick's step.
+    wait = (static_cast<double>(tick - steps_) - 0.5) * input.dt;
+  }
   for (const BodyMotion* body : resting) {
     if (!body) continue;
     RestTracker::Mover& mover = rest_.record(body->handle);
-    mover.next_judgement = mover.rest_time + options_.rest_time;
+    mover.next_judgement = mover.rest_time + wait;
   }
 }
 

@@ -84,6 +84,12 @@ class StackStabilityModel : public StabilityModel {
   /// they froze.
   bool admitTogether(const std::vector<BodyMotion>& bodies, const ContactIndex& index,
                      bool measured_loads, StabilityDecisions* decisions);
+  /// Whether the stack, with `bodies` joined as `admitted` says, passes the
+  /// check that wakes frozen bricks: a group that rests on frozen bricks
+  /// must not freeze only to wake them, and itself, at the next check.
+  bool standsJoined(const std::vector<BodyMotion>& bodies,
+                    const std::vector<BrickStability>& stability,
+                    const std::vector<FreezeDecision>& admitted) const;
   /// Evaluates `body` on its supports among `contacts` into `stability`;
   /// true (and `decision`) when the criterion admits it.
   bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
