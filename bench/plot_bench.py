@@ -4,7 +4,8 @@
 usage: plot_bench.py RESULTS.csv OUTPUT_DIR
 
 For each case: run time against error for every mode and setting (the Pareto
-picture); for the settled towers: cost against number of bricks. The targets
+picture), for the piles also against the time they settle; for the settled
+towers: cost against number of bricks. The targets
 are checked on ratios measured side by side in the same CSV. The motions with
 an answer from mechanics get a table of their own (*_motion.md): measured,
 expected and error per mode, at the default setting.
@@ -40,7 +41,11 @@ ERROR_OF = {  # case kind -> (column, axis label)
     "collapse_layer_error": "|collapse layer error| [layers]",
     "penetration_mm": "deepest penetration [mm]",
     "motion_error_pct": "error against mechanics [%]",
+    "settle_time": "settled from (98 % of bricks at rest to the end) [s]; never: at the end",
 }
+# Measured by Jolt on pile1000 for 10 s at 1 ms: what the stability layer is held to.
+JOLT_PILE1000_WALL_S = 46.0
+JOLT_PILE1000_PENETRATION_MM = 0.7
 # What each motion case measures, and the reference its error is against.
 MOTION_QUANTITY = {
     "slide": ("stopping distance from 1 m/s [mm]", 1000.0, "v^2 / (2 mu g)"),
@@ -57,8 +62,9 @@ def load(path):
     for r in rows:
         for key in ("time_step", "wall_ms_per_sim_s", "bricks", "iterations"):
             r[key] = float(r[key])
-        for key in ("motion_measured", "motion_expected", "motion_error_pct"):
-            r.setdefault(key, "")  # a CSV from before the motions
+        for key in ("motion_measured", "motion_expected", "motion_error_pct", "settle_time",
+                    "at_rest_pct", "fell_off", "settled_cost_pct"):
+            r.setdefault(key, "")  # a CSV from before the motions or the piles
     return rows
 
 
@@ -70,16 +76,23 @@ def error_column(rows):
 
 
 def error_value(row, column):
+    if column == "settle_time" and row[column] == "":
+        return float(row["sim_time"])  # never settled: as late as the run shows
     value = float(row[column])
     return abs(value)
+
+
+def is_pile(row):
+    """A pile case's row: it measures how the pile came to rest."""
+    return row["at_rest_pct"] != ""
 
 
 def is_default(row):
     return abs(row["time_step"] - DEFAULT[0]) < 1e-9 and int(row["iterations"]) == DEFAULT[1]
 
 
-def plot_pareto(case, rows, out_dir, stem):
-    column = error_column(rows)
+def plot_pareto(case, rows, out_dir, stem, column=None, suffix=""):
+    column = column or error_column(rows)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for mode, colour in colours_for(rows).items():
         points = [r for r in rows if r["mode"] == mode]
@@ -89,19 +102,22 @@ def plot_pareto(case, rows, out_dir, stem):
                    [max(r["wall_ms_per_sim_s"], 1e-3) for r in points],
                    color=colour, label=mode, s=36)
         for r in points:
-            ax.annotate(f"1/{round(1 / r['time_step'])}s,{int(r['iterations'])}it",
+            never = " never" if column == "settle_time" and r[column] == "" else ""
+            ax.annotate(f"1/{round(1 / r['time_step'])}s,{int(r['iterations'])}it{never}",
                         (error_value(r, column), max(r["wall_ms_per_sim_s"], 1e-3)),
                         fontsize=6, xytext=(3, 2), textcoords="offset points")
     ax.set_yscale("log")
-    ax.set_xscale("symlog", linthresh=0.01)
+    if column != "settle_time":  # seconds read best on a linear axis
+        ax.set_xscale("symlog", linthresh=0.01)
     ax.set_xlim(left=0.0)
     ax.set_xlabel(ERROR_OF[column])
     ax.set_ylabel("wall time per simulated second [ms]")
-    ax.set_title(f"{case}: run time against error (lower left is better)")
+    against = "settling" if column == "settle_time" else "error"
+    ax.set_title(f"{case}: run time against {against} (lower left is better)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, f"{stem}_pareto_{case}.png"), dpi=110)
+    fig.savefig(os.path.join(out_dir, f"{stem}_pareto_{case}{suffix}.png"), dpi=110)
     plt.close(fig)
 
 
@@ -129,6 +145,37 @@ def plot_scaling(rows, out_dir, stem):
 
 def ratio(a, b):
     return a / b if b > 0 else math.inf
+
+
+def pile_targets(case, by):
+    """A pile left to settle: com against plain Bullet with sleeping, how soon
+    it comes to rest and what it costs then; pile1000 also against Jolt."""
+    com, none = by.get((case, "com")), by.get((case, "none_sleep"))
+    if not com:
+        return []
+    lines = []
+    if none:
+        r = ratio(none["wall_ms_per_sim_s"], com["wall_ms_per_sim_s"])
+        lines.append(f"| {case}: com >= 10x faster than none | {r:.1f}x | "
+                     f"{'yes' if r >= 10 else 'no'} |")
+    rest = float(com["at_rest_pct"])
+    settle = float(com["settle_time"]) if com["settle_time"] != "" else math.inf
+    lines.append(f"| {case} (com): >= 98 % of bricks at rest, settled by 5 s | {rest:.1f} % at "
+                 f"rest, settled {'never' if settle == math.inf else f'at {settle:.2f} s'} | "
+                 f"{'yes' if rest >= 98 and settle <= 5.0 else 'no'} |")
+    cost = float(com["settled_cost_pct"])
+    lines.append(f"| {case} (com): settled pile costs < 2 % of real time | {cost:.3f} % | "
+                 f"{'yes' if cost < 2.0 else 'no'} |")
+    if case == "pile1000":
+        wall = com["wall_ms_per_sim_s"] * 10.0 / 1000.0  # for 10 s, as Jolt's
+        lines.append(f"| {case} (com): wall time within Jolt's {JOLT_PILE1000_WALL_S:.0f} s at 1 ms "
+                     f"(10 s simulated) | {wall:.1f} s | "
+                     f"{'yes' if wall <= JOLT_PILE1000_WALL_S else 'no'} |")
+        depth = float(com["penetration_mm"])
+        lines.append(f"| {case} (com): penetration no worse than Jolt's "
+                     f"{JOLT_PILE1000_PENETRATION_MM} mm | {depth:.2f} mm | "
+                     f"{'yes' if depth <= JOLT_PILE1000_PENETRATION_MM else 'no'} |")
+    return lines
 
 
 def targets(rows):
@@ -159,7 +206,9 @@ def targets(rows):
     for case in sorted({r["case"] for r in rows
                         if r["case"].startswith("pile") or r["case"].startswith("freefall")}):
         com, none = by.get((case, "com")), by.get((case, "none_sleep"))
-        if com and none:
+        if com and is_pile(com):
+            lines.extend(pile_targets(case, by))
+        elif com and none:
             r = ratio(com["wall_ms_per_sim_s"], none["wall_ms_per_sim_s"])
             lines.append(f"| {case} drop: com <= 1.10x none | {r:.2f}x | "
                          f"{'yes' if r <= 1.10 else 'no'} |")
@@ -221,7 +270,10 @@ def main():
     os.makedirs(out_dir, exist_ok=True)
     stem = os.path.splitext(os.path.basename(sys.argv[1]))[0]
     for case in sorted({r["case"] for r in rows}):
-        plot_pareto(case, [r for r in rows if r["case"] == case], out_dir, stem)
+        points = [r for r in rows if r["case"] == case]
+        plot_pareto(case, points, out_dir, stem)
+        if all(is_pile(r) for r in points):
+            plot_pareto(case, points, out_dir, stem, "settle_time", "_settle")
     plot_scaling(rows, out_dir, stem)
     table = targets(rows)
     with open(os.path.join(out_dir, f"{stem}_targets.md"), "w") as f:

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 
 #include "brick_stack_sim/core/geometry/convex_solid.h"
@@ -64,7 +66,10 @@ RunOptions optionsFor(const BenchSetting& setting, double duration) {
 /// A run with the stepping wall time measured apart from the setup.
 struct TimedRun {
   RunReport report;
-  double step_wall_time = 0.0;           ///< [s]
+  double step_wall_time = 0.0;  ///< [s]
+  /// The part of step_wall_time spent on the last simulated second (on all
+  /// of a shorter run) [s]: a settled scene's cost, after what settled it.
+  double last_second_wall = 0.0;
   std::vector<BrickSnapshot> at_window;  ///< Bricks when sim time reached the window.
 };
 
@@ -77,10 +82,16 @@ Status timedRun(const Scene& scene, const BenchContext& context, RunOptions opti
   bool started = false;
   bool sampled = false;
   double stepping = 0.0;
+  // The stepping time before the last simulated second began: -1 until then.
+  const double last_second_from = options.duration.value_or(0.0) - 1.0;
+  double before_last_second = -1.0;
   options.observer = [&](const BrickWorld& world) {
     const Clock::time_point now = Clock::now();
     if (started) stepping += std::chrono::duration<double>(now - last_step).count();
     started = true;
+    if (before_last_second < 0.0 &&
+        world.time() >= last_second_from - 0.5 * world.options().time_step)
+      before_last_second = stepping;
     if (!sampled && window > 0.0 && world.time() >= window - 0.5 * world.options().time_step) {
       run->at_window = world.snapshot();
       sampled = true;
@@ -90,6 +101,7 @@ Status timedRun(const Scene& scene, const BenchContext& context, RunOptions opti
   };
   const Status status = runScene(scene, context.types, options, &run->report);
   run->step_wall_time = stepping;
+  run->last_second_wall = stepping - std::max(before_last_second, 0.0);
   return status;
 }
 
@@ -168,9 +180,69 @@ Status referenceBricks(const Scene& scene, const BenchSetting& setting, const Be
   return Status::success();
 }
 
-/// kSettled and kDrop: the fastest of the repeats of a stored scene, its
-/// drift (kSettled), the overlap left at the end and, with `divergence`,
-/// how far its bricks are at the window from a reference run's.
+/// Sim time between two looks at how much of a pile rests [s]: a settle
+/// time to within it, for a snapshot per 10 steps at 1 ms, not per step.
+constexpr double kPileSamplePeriod = 0.01;
+
+/// A brick that costs nothing more: frozen by a model, or asleep in Bullet.
+bool atRest(const BrickSnapshot& b) {
+  return b.state == BrickState::kStable || b.state == BrickState::kLeaning || b.asleep;
+}
+
+/// The fastest of the repeats of case `c` on `scene`; for kPile, `rest`
+/// receives when that run's pile came to rest. The looks at the pile are
+/// outside the stepping wall time (timedRun).
+Status fastestRun(const Scene& scene, const BenchCase& c, const BenchSetting& setting,
+                  const BenchContext& context, double window, TimedRun* run, PileRest* rest) {
+  for (int repeat = 0; repeat < std::max(c.repeats, 1); ++repeat) {
+    TimedRun attempt;
+    PileRest attempt_rest;
+    double next_look = 0.0;
+    std::function<void(const BrickWorld&)> watch;
+    if (c.metric == BenchMetric::kPile) {
+      watch = [&](const BrickWorld& world) {
+        if (world.time() < next_look - 0.5 * world.options().time_step) return;
+        next_look = world.time() + kPileSamplePeriod;
+        const std::vector<BrickSnapshot> bricks = world.snapshot();
+        attempt_rest.sample(
+            world.time(),
+            static_cast<std::size_t>(std::count_if(bricks.begin(), bricks.end(), atRest)),
+            bricks.size());
+      };
+    }
+    if (Status ran =
+            timedRun(scene, context, optionsFor(setting, c.duration), window, &attempt, watch);
+        !ran)
+      return ran;
+    if (repeat == 0 || attempt.step_wall_time < run->step_wall_time) {
+      *run = std::move(attempt);
+      *rest = attempt_rest;
+    }
+  }
+  return Status::success();
+}
+
+/// kPile: when the pile of `run` settled, how much of it rests and lies on
+/// the floor at the end, and what its last simulated second cost.
+void measurePile(const TimedRun& run, double duration, PileRest rest, BenchRow* row) {
+  std::size_t at_rest = 0, fell_off = 0;
+  for (const BrickOutcome& b : run.report.bricks) {
+    at_rest += atRest(b.brick) ? 1 : 0;
+    fell_off += b.brick.fell_off ? 1 : 0;
+  }
+  const std::size_t bricks = run.report.bricks.size();
+  // The end as the last look: a pile that stirred after it counts as unsettled.
+  rest.sample(run.report.sim_time, at_rest, bricks);
+  row->settle_time = rest.settleTime();
+  row->at_rest_pct = bricks > 0 ? 100.0 * at_rest / bricks : 0.0;
+  row->fell_off = static_cast<long>(fell_off);
+  row->settled_cost_pct = 100.0 * run.last_second_wall / std::min(1.0, duration);
+}
+
+/// kSettled, kDrop and kPile: the fastest of the repeats of a stored scene,
+/// its drift (kSettled), the overlap left at the end, how it came to rest
+/// (kPile) and, with `divergence`, how far its bricks are at the window from
+/// a reference run's.
 Status runStoredScene(const BenchCase& c, const BenchSetting& setting, const BenchContext& context,
                       bool divergence, BenchRow* row) {
   Scene scene;
@@ -178,14 +250,10 @@ Status runStoredScene(const BenchCase& c, const BenchSetting& setting, const Ben
   row->scene = scene.name;
   const double window = std::min(1.0, c.duration);
   TimedRun run;
-  for (int repeat = 0; repeat < std::max(c.repeats, 1); ++repeat) {
-    TimedRun attempt;
-    if (Status ran = timedRun(scene, context, optionsFor(setting, c.duration), window, &attempt);
-        !ran)
-      return ran;
-    if (repeat == 0 || attempt.step_wall_time < run.step_wall_time) run = std::move(attempt);
-  }
+  PileRest rest;
+  if (Status ran = fastestRun(scene, c, setting, context, window, &run, &rest); !ran) return ran;
   accumulate(run, row);
+  if (c.metric == BenchMetric::kPile) measurePile(run, c.duration, rest, row);
   double drift = 0.0;
   for (const BrickOutcome& b : run.report.bricks) drift = std::max(drift, b.displacement);
   if (c.metric == BenchMetric::kSettled) row->drift_mm = 1000.0 * drift;
@@ -316,6 +384,15 @@ Status runMotion(const BenchCase& c, const BenchSetting& setting, const BenchCon
 
 }  // namespace
 
+void PileRest::sample(double time, std::size_t at_rest, std::size_t bricks) {
+  // In whole bricks, with no rounding: 196 of 200 is settled, 195 is not.
+  const bool settled = bricks > 0 && 100 * at_rest >= kSettledPct * bricks;
+  if (!settled)
+    settled_since_ = std::numeric_limits<double>::quiet_NaN();
+  else if (std::isnan(settled_since_))
+    settled_since_ = time;
+}
+
 Status runBenchCase(const BenchCase& c, const BenchSetting& setting, const BenchContext& context,
                     bool divergence, BenchRow* row) {
   *row = BenchRow();
@@ -324,6 +401,7 @@ Status runBenchCase(const BenchCase& c, const BenchSetting& setting, const Bench
   switch (c.metric) {
     case BenchMetric::kSettled:
     case BenchMetric::kDrop:
+    case BenchMetric::kPile:
       return runStoredScene(c, setting, context, divergence, row);
     case BenchMetric::kHarmonic:
       return runHarmonic(c, setting, context, row);

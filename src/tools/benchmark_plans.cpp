@@ -102,6 +102,16 @@ void addMotions(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
   }
 }
 
+/// Piles dropped and left to settle for 10 s, the modes that sleep side by
+/// side: long enough to see a pile land (about 1 s), settle, and cost what a
+/// settled pile costs in its last second. Plain Bullet without sleeping has
+/// no rest to measure.
+void addPiles(const std::vector<std::string>& scenes, BenchPlan* plan) {
+  for (const std::string& scene : scenes)
+    plan->cases.push_back(makeCase(scene, scene, BenchMetric::kPile, 10.0,
+                                   settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+}
+
 }  // namespace
 
 int slantTowerCollapseLayer(double offset, double length) {
@@ -117,8 +127,7 @@ BenchPlan quickBenchPlan() {
   plan.cases.push_back(harmonic);
   BenchCase slant = makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, settings);
   plan.cases.push_back(slant);
-  plan.cases.push_back(makeCase("pile200", "pile200", BenchMetric::kDrop, 1.0,
-                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  addPiles({"pile200"}, &plan);
   plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   addBuiltStructures(settingsFor(allModes(), {{1.0 / 1000, 20}}), &plan);
@@ -149,13 +158,11 @@ BenchPlan fullBenchPlan() {
   plan.cases.push_back(makeCase("tower25", "tower25", BenchMetric::kSettled, 30.0, sweep));
   plan.cases.push_back(makeCase("harmonic10", "", BenchMetric::kHarmonic, 5.0, sweep));
   plan.cases.push_back(makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, sweep));
-  plan.cases.push_back(makeCase("pile200", "pile200", BenchMetric::kDrop, 3.0, steps));
   plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
   plan.cases.push_back(makeCase("tower100", "tower100", BenchMetric::kSettled, 30.0, steps));
   plan.cases.push_back(makeCase("pyramid210", "pyramid210", BenchMetric::kSettled, 30.0, defaults));
-  plan.cases.push_back(makeCase("pile1000", "pile1000", BenchMetric::kDrop, 3.0,
-                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  addPiles({"pile200", "pile1000"}, &plan);
   for (const char* tower : {"tower10", "tower50"})
     plan.cases.push_back(makeCase(tower, tower, BenchMetric::kSettled, 30.0, defaults));
   addBuiltStructures(defaults, &plan);
@@ -174,7 +181,8 @@ std::string benchCsvHeader() {
          "bullet_share,contact_share,stability_share,broadphase_share,narrowphase_share,"
          "islands_share,solver_share,integration_share,drift_mm,penetration_mm,"
          "collapse_layer_error,threshold_error_pct,divergence_mm,nonfinite,lost,refused,"
-         "motion_measured,motion_expected,motion_error_pct\n";
+         "motion_measured,motion_expected,motion_error_pct,settle_time,at_rest_pct,fell_off,"
+         "settled_cost_pct\n";
 }
 
 std::string toCsv(const BenchRow& r) {
@@ -191,7 +199,7 @@ std::string toCsv(const BenchRow& r) {
   std::snprintf(
       line, sizeof line,
       "%s,%s,%zu,%s,%d,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,"
-      "%.4f,%.4f,%s,%s,%s,%s,%s,%llu,%zu,%zu,%s,%s,%s\n",
+      "%.4f,%.4f,%s,%s,%s,%s,%s,%llu,%zu,%zu,%s,%s,%s,%s,%s,%s,%s\n",
       r.label.c_str(), r.scene.c_str(), r.bricks, r.setting.mode_label.c_str(),
       r.setting.sleeping ? 1 : 0, r.setting.time_step, r.setting.iterations, r.sim_time,
       r.wall_time, r.sim_time > 0.0 ? 1000.0 * r.wall_time / r.sim_time : 0.0,
@@ -204,7 +212,10 @@ std::string toCsv(const BenchRow& r) {
       optional(r.collapse_layer_error, -1e9).c_str(), optional(r.threshold_error_pct, -1.0).c_str(),
       optional(r.divergence_mm, -1.0).c_str(), r.nonfinite, r.lost, r.refused,
       optional(r.motion_measured, -1.0).c_str(), optional(r.motion_expected, -1.0).c_str(),
-      optional(r.motion_error_pct, -1.0).c_str());
+      optional(r.motion_error_pct, -1.0).c_str(), optional(r.settle_time, -1.0).c_str(),
+      optional(r.at_rest_pct, -1.0).c_str(),
+      optional(static_cast<double>(r.fell_off), -1.0).c_str(),
+      optional(r.settled_cost_pct, -1.0).c_str());
   return line;
 }
 

@@ -31,6 +31,9 @@ enum class BenchMetric {
   kHarmonic,    ///< Harmonic stack: |measured threshold factor - 1| [% of f].
   kSlantTower,  ///< Slant tower: measured - statics collapse layer [layers].
   kMotion,      ///< A motion with an answer from mechanics: |measured / expected - 1| [%].
+  /// A pile dropped and left to settle: penetration [mm] as kDrop, and when
+  /// it comes to rest [s] and what it costs then [% of real time].
+  kPile,
 };
 
 struct BenchCase {
@@ -74,9 +77,32 @@ struct BenchRow {
   double motion_measured = std::numeric_limits<double>::quiet_NaN();
   double motion_expected = std::numeric_limits<double>::quiet_NaN();
   double motion_error_pct = -1.0;
+  /// kPile: the earliest sim time from which at least PileRest::kSettledPct
+  /// of the bricks stayed at rest to the end [s]; NaN: never.
+  double settle_time = std::numeric_limits<double>::quiet_NaN();
+  double at_rest_pct = -1.0;       ///< kPile: bricks at rest at the end [%]; -1: not measured.
+  long fell_off = -1;              ///< kPile: bricks on the floor at the end; -1: not measured.
+  double settled_cost_pct = -1.0;  ///< kPile: stepping wall time of the last sim second [% of it].
   unsigned long long nonfinite = 0;
   std::size_t lost = 0;     ///< Bricks placed but gone at the end, lost or missing (must be 0).
   std::size_t refused = 0;  ///< Scene placements the world refused.
+};
+
+/// When a pile comes to rest, from samples in time order of how many of its
+/// bricks are at rest: frozen by a stability model, or asleep in plain Bullet.
+class PileRest {
+ public:
+  /// The share of the bricks at rest from which a pile counts as settled [%]:
+  /// not all, since a brick on the floor or at the pile's foot may rock on.
+  static constexpr std::size_t kSettledPct = 98;
+
+  /// `at_rest` of `bricks` were at rest at sim time `time` [s].
+  void sample(double time, std::size_t at_rest, std::size_t bricks);
+  /// The first sample from which every sample was settled [s]; NaN: the last was not.
+  double settleTime() const { return settled_since_; }
+
+ private:
+  double settled_since_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The two-minute subset (`make bench-quick`) and the whole sweep (`make bench`).
