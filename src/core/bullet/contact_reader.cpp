@@ -10,7 +10,10 @@ namespace brick_stack_sim {
 
 void readContacts(const BulletScene& scene, double contact_distance,
                   std::vector<PairContact>* contacts) {
-  contacts->clear();
+  // The pairs of the last read are refilled in place: their point vectors
+  // keep their capacity, and a pile's thousands of pairs are not allocated
+  // and freed again every step.
+  std::size_t used = 0;
   const btCollisionDispatcher& dispatcher = scene.dispatcher();
   const int manifolds = dispatcher.getNumManifolds();
   for (int i = 0; i < manifolds; ++i) {
@@ -18,12 +21,15 @@ void readContacts(const BulletScene& scene, double contact_distance,
     if (manifold->getNumContacts() == 0) continue;
     const btRigidBody* a = btRigidBody::upcast(manifold->getBody0());
     const btRigidBody* b = btRigidBody::upcast(manifold->getBody1());
-    PairContact pair;
+    if (used == contacts->size()) contacts->emplace_back();
+    PairContact& pair = (*contacts)[used];
     pair.a = handleOf(a);
     pair.b = handleOf(b);
-    // A manifold holds at most four points: one allocation each, not a growth.
-    pair.points.reserve(manifold->getNumContacts());
-    pair.manifold.reserve(manifold->getNumContacts());
+    pair.normal = Eigen::Vector3d::UnitZ();
+    pair.points.clear();
+    pair.manifold.clear();
+    pair.approach_speed = 0.0;
+    pair.friction = 0.0;
     btVector3 normal_sum(0, 0, 0);
     for (int j = 0; j < manifold->getNumContacts(); ++j) {
       const btManifoldPoint& point = manifold->getContactPoint(j);
@@ -39,17 +45,17 @@ void readContacts(const BulletScene& scene, double contact_distance,
       // a positive sign, as it applies the normal impulse.
       const btVector3 friction = point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
                                  point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
-      pair.manifold.push_back(ContactPoint{convertBtToEigen(position),
-                                           convertBtToEigen(point.m_normalWorldOnB),
-                                           point.getDistance(), point.getAppliedImpulse(),
-                                           convertBtToEigen(friction)});
+      pair.manifold.push_back(
+          ContactPoint{convertBtToEigen(position), convertBtToEigen(point.m_normalWorldOnB),
+                       point.getDistance(), point.getAppliedImpulse(), convertBtToEigen(friction)});
       pair.friction = point.m_combinedFriction;
       normal_sum += point.m_normalWorldOnB;
     }
     if (pair.points.empty() || normal_sum.length2() == 0.0) continue;
     pair.normal = convertBtToEigen(normal_sum.normalized());
-    contacts->push_back(std::move(pair));
+    ++used;
   }
+  contacts->resize(used);
 }
 
 }  // namespace brick_stack_sim
