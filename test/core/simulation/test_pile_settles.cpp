@@ -173,9 +173,10 @@ TEST_P(PileSettles, ADroppedPileEndsAtRestOnTheTableWithNoBrickLost) {
     // velocity however small, so nothing holds a plank across it and the
     // pile creeps (25 of these 40 planks still awake after 5 s, one 32 mm
     // on by 20 s). What the models bring is the freeze.
-    if (model)
+    if (model) {
       EXPECT_TRUE(atRest(brick, model)) << "in mode " << mode << " at t=" << world->time()
                                         << " s: " << describe(brick) << log.about(brick.id);
+    }
   }
   // With a model, a pile at rest costs nothing more: a step only advances the clock.
   if (model) {
