@@ -222,7 +222,11 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
   if (input.dt > 0.0) {
     const std::uint64_t window = std::max<std::uint64_t>(
         1, static_cast<std::uint64_t>(std::llround(options_.rest_time / input.dt)));
-    const std::uint64_t tick = (steps_ / window + 2) * window;
+    // Ticks two windows apart, not one: re-asked every other window on
+    // ticks one window apart, bricks first refused in odd and even windows
+    // were never due together.
+    const std::uint64_t period = 2 * window;
+    const std::uint64_t tick = ((steps_ + window) / period + 1) * period;
     // Half a step short, so that sums of dt that round differently still
     // fall due in the tick's step.
     wait = (static_cast<double>(tick - steps_) - 0.5) * input.dt;
@@ -237,14 +241,13 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
 void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
                                              std::vector<const BodyMotion*>* resting,
                                              StabilityDecisions* decisions) {
-  // The candidates: at rest, not admitted alone, and not waiting where the
-  // model woke them (they freeze again only on statics with a margin).
+  // The candidates: at rest and not admitted alone, those waiting where
+  // statics woke them too: what holds such a brick now may be a partner at
+  // rest, which it alone cannot count on, so alone it is refused for ever.
   std::map<BodyHandle, std::size_t> candidate;
   for (std::size_t i = 0; i < resting->size(); ++i) {
     const BodyMotion* body = (*resting)[i];
     if (!body) continue;
-    const RestTracker::Mover& mover = rest_.record(body->handle);
-    if (mover.woken && (body->com - mover.woken_at).norm() < kMovedAway) continue;
     candidate[body->handle] = i;
   }
   std::set<BodyHandle> seen;
