@@ -15,6 +15,7 @@
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"
 #include "bullet/bullet_scene_impl.h"
+#include "bullet/cone_friction_solver.h"
 #include "bullet/time_of_impact.h"
 
 namespace brick_stack_sim {
@@ -43,6 +44,14 @@ void configureSolver(const WorldOptions& options, btContactSolverInfo* solver_in
   solver_info->m_erp2 = options.erp;
   // Never SOLVER_RANDMIZE_ORDER: the same inputs must give the same bits.
   solver_info->m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_SIMD;
+  // Two directions, which ConeFrictionSolver holds to the cone together. The
+  // cone is the same whichever way they point, so they are taken from the
+  // contact normal alone, not from the slip: a pair that turned with the
+  // slip would warm-start last step's friction in another direction, a
+  // sideways kick each step that threw bricks at long steps.
+  if (options.friction_cone)
+    solver_info->m_solverMode |=
+        SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
 }
 
 }  // namespace
@@ -58,7 +67,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
                                           box_box_algorithm.get());
   broadphase = std::make_unique<btDbvtBroadphase>();
-  solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+  solver = std::make_unique<ConeFrictionSolver>();
   world = std::make_unique<BrickDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                                collision_configuration.get());
   world->setGravity(btVector3(0, 0, -options.gravity));

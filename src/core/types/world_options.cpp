@@ -146,6 +146,7 @@ Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
     reader.section("sleeping", &readSleepingOptions, &world.sleeping);
     reader.read("split_impulse_penetration_threshold", &world.split_impulse_penetration_threshold);
     reader.read("erp", &world.erp);
+    reader.read("friction_cone", &world.friction_cone);
     reader.read("collision_margin", &world.collision_margin);
     reader.read("overlap_tolerance", &world.overlap_tolerance);
     reader.read("fall_off_depth", &world.fall_off_depth);

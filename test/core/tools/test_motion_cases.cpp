@@ -47,8 +47,9 @@ class MotionInMode : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MotionInMode, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
   const BrickTypeLibrary types = test::packageTypes();
-  for (const Closed& c : {Closed{MotionCase::kSlide, 1.0}, Closed{MotionCase::kIncline, 0.3},
-                          Closed{MotionCase::kTopple, 0.8}, Closed{MotionCase::kFreeFlight, 0.35}}) {
+  for (const Closed& c :
+       {Closed{MotionCase::kSlide, 1.0}, Closed{MotionCase::kIncline, 0.3},
+        Closed{MotionCase::kTopple, 0.8}, Closed{MotionCase::kFreeFlight, 0.35}}) {
     const double expected = motionExpected(c.motion, types, TableOptions(), WorldOptions().gravity);
     const double measured = measure(c.motion, test::optionsFor(GetParam()), c.duration);
     std::printf("%-12s %-12s measured %.6g, mechanics %.6g (%+.2f %%)\n",
@@ -56,6 +57,23 @@ TEST_P(MotionInMode, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
                 100.0 * (measured / expected - 1.0));
     if (GetParam() == "none") continue;  // the baseline, reported
     EXPECT_NEAR(measured / expected, 1.0, 0.02) << motionCaseName(c.motion);
+  }
+}
+
+TEST(MotionWithFrictionCone, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
+  // Friction held to the cone in two directions must leave sliding as
+  // Coulomb's law has it: opposed to the slip at mu N.
+  const BrickTypeLibrary types = test::packageTypes();
+  for (const char* mode : {"none", "com"}) {
+    WorldOptions world = test::optionsFor(mode);
+    world.friction_cone = true;
+    for (const Closed& c :
+         {Closed{MotionCase::kSlide, 1.0}, Closed{MotionCase::kIncline, 0.3},
+          Closed{MotionCase::kTopple, 0.8}, Closed{MotionCase::kFreeFlight, 0.35}}) {
+      const double expected = motionExpected(c.motion, types, TableOptions(), world.gravity);
+      EXPECT_NEAR(measure(c.motion, world, c.duration) / expected, 1.0, 0.02)
+          << motionCaseName(c.motion) << " in " << mode;
+    }
   }
 }
 
@@ -76,7 +94,8 @@ TEST(MotionMechanics, TheClosedFormsAreTheTextbookOnes) {
   // would say (sin phi < phi), but of its order.
   const double d = std::hypot(test::kKaplaLength, test::kKaplaThickness);
   const double k = std::sqrt(3.0 * g / (2.0 * d));
-  const double phi_end = 45.0 * M_PI / 180.0 - std::atan2(test::kKaplaThickness, test::kKaplaLength);
+  const double phi_end =
+      45.0 * M_PI / 180.0 - std::atan2(test::kKaplaThickness, test::kKaplaLength);
   const double linear = std::acosh(phi_end / (2.0 * M_PI / 180.0)) / k;
   const double topple = motionExpected(MotionCase::kTopple, types, TableOptions(), g);
   EXPECT_GT(topple, 0.9 * linear);

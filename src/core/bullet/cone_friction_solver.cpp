@@ -1,0 +1,164 @@
+#include "bullet/cone_friction_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// The change of a row's impulse that would cancel its velocity error,
+/// unbounded [N s]: the row's right-hand side less what the velocity
+/// changes of this step already do along it.
+btScalar unboundedChange(const btSolverConstraint& row, btSolverBody& a, btSolverBody& b) {
+  const btScalar along_a = row.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) +
+                           row.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity());
+  const btScalar along_b = row.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) +
+                           row.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
+  return row.m_rhs - row.m_appliedImpulse * row.m_cfm - (along_a + along_b) * row.m_jacDiagABInv;
+}
+
+/// How far out a pair of friction impulses [N s] lies on the cone's
+/// section with half-axes `limit_first` and `limit_second` [N s], squared:
+/// at most 1 inside.
+btScalar reach(btScalar first, btScalar second, btScalar limit_first, btScalar limit_second) {
+  const btScalar along_first = first / limit_first, along_second = second / limit_second;
+  return along_first * along_first + along_second * along_second;
+}
+
+/// Scales a pair outside the section back onto its edge.
+void pullOntoSection(btScalar* first, btScalar* second, btScalar limit_first,
+                     btScalar limit_second) {
+  const btScalar out = std::sqrt(reach(*first, *second, limit_first, limit_second));
+  *first /= out;
+  *second /= out;
+}
+
+/// Sets a row's impulse to `total` and applies the change to both bodies;
+/// the change as a velocity, Bullet's residual of a row.
+btScalar applyTotal(btSolverConstraint& row, btSolverBody& a, btSolverBody& b, btScalar total) {
+  const btScalar change = total - row.m_appliedImpulse;
+  row.m_appliedImpulse = total;
+  a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA,
+                         change);
+  b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB,
+                         change);
+  return change / row.m_jacDiagABInv;
+}
+
+}  // namespace
+
+btScalar ConeFrictionSolver::solveBoundedRow(btSolverConstraint& row) {
+  btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+  btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+  const btScalar total = std::clamp(row.m_appliedImpulse + unboundedChange(row, a, b),
+                                    row.m_lowerLimit, row.m_upperLimit);
+  const btScalar residual = applyTotal(row, a, b, total);
+  return residual * residual;
+}
+
+btScalar ConeFrictionSolver::solveFrictionPair(btSolverConstraint& first,
+                                               btSolverConstraint& second, btScalar normal) {
+  btSolverBody& a = m_tmpSolverBodyPool[first.m_solverBodyIdA];
+  btSolverBody& b = m_tmpSolverBodyPool[first.m_solverBodyIdB];
+  const btScalar limit_first = first.m_friction * normal;
+  const btScalar limit_second = second.m_friction * normal;
+  first.m_lowerLimit = -limit_first;
+  first.m_upperLimit = limit_first;
+  second.m_lowerLimit = -limit_second;
+  second.m_upperLimit = limit_second;
+  if (limit_first <= 0 || limit_second <= 0)  // no cone to project on: each row alone
+    return std::max(solveBoundedRow(first), solveBoundedRow(second));
+
+  // What both rows would need to stop the slip, from the same velocities.
+  btScalar total_first = first.m_appliedImpulse + unboundedChange(first, a, b);
+  btScalar total_second = second.m_appliedImpulse + unboundedChange(second, a, b);
+  if (reach(total_first, total_second, limit_first, limit_second) <= 1) {
+    // It sticks: each row the least change that cancels its own velocity
+    // error, which never adds energy.
+    const btScalar residual = std::max(solveBoundedRow(first), solveBoundedRow(second));
+    if (reach(first.m_appliedImpulse, second.m_appliedImpulse, limit_first, limit_second) <= 1)
+      return residual;
+    // The second row's change took the pair out: back onto the section.
+    total_first = first.m_appliedImpulse;
+    total_second = second.m_appliedImpulse;
+    pullOntoSection(&total_first, &total_second, limit_first, limit_second);
+    const btScalar pulled_first = applyTotal(first, a, b, total_first);
+    const btScalar pulled_second = applyTotal(second, a, b, total_second);
+    return std::max({residual, pulled_first * pulled_first, pulled_second * pulled_second});
+  }
+  // Sliding: friction against the slip, at the cone's edge.
+  const btScalar slip_first = (total_first - first.m_appliedImpulse) / first.m_jacDiagABInv;
+  const btScalar slip_second = (total_second - second.m_appliedImpulse) / second.m_jacDiagABInv;
+  const btScalar slip = std::sqrt(slip_first * slip_first + slip_second * slip_second);
+  if (slip > 0) {
+    total_first = limit_first * slip_first / slip;
+    total_second = limit_second * slip_second / slip;
+  } else {
+    pullOntoSection(&total_first, &total_second, limit_first, limit_second);
+  }
+  const btScalar residual_first = applyTotal(first, a, b, total_first);
+  const btScalar residual_second = applyTotal(second, a, b, total_second);
+  return std::max(residual_first * residual_first, residual_second * residual_second);
+}
+
+btScalar ConeFrictionSolver::solveSingleIteration(
+    int iteration, btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
+    int num_manifolds, btTypedConstraint** constraints, int num_constraints,
+    const btContactSolverInfo& info, btIDebugDraw* debug) {
+  const int mode = info.m_solverMode;
+  const bool cone_applies = (mode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
+                            !(mode & SOLVER_INTERLEAVE_CONTACT_AND_FRICTION_CONSTRAINTS) &&
+                            !(mode & SOLVER_RANDMIZE_ORDER) && num_constraints == 0 &&
+                            m_tmpSolverNonContactConstraintPool.size() == 0;
+  if (!cone_applies)
+    return btSequentialImpulseConstraintSolver::solveSingleIteration(
+        iteration, bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info,
+        debug);
+  btScalar residual = 0;
+  if (iteration >= info.m_numIterations) return residual;
+
+  // The normals first, then the friction they bound, in Bullet's order.
+  for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i) {
+    const btSolverConstraint& row = m_tmpSolverContactConstraintPool[m_orderTmpConstraintPool[i]];
+    const btScalar change = resolveSingleConstraintRowLowerLimit(
+        m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+    residual = std::max(residual, change * change);
+  }
+  // Bullet adds a contact point's two friction rows one after the other,
+  // both naming the point's normal row.
+  const int num_friction = m_tmpSolverContactFrictionConstraintPool.size();
+  for (int i = 0; i < num_friction; ++i) {
+    btSolverConstraint& row =
+        m_tmpSolverContactFrictionConstraintPool[m_orderFrictionConstraintPool[i]];
+    const btScalar normal = m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
+    btSolverConstraint* partner =
+        i + 1 < num_friction
+            ? &m_tmpSolverContactFrictionConstraintPool[m_orderFrictionConstraintPool[i + 1]]
+            : nullptr;
+    if (partner && partner->m_frictionIndex != row.m_frictionIndex) partner = nullptr;
+    if (partner) ++i;
+    if (normal <= 0) continue;  // a point that pushes nothing holds nothing
+    if (partner) {
+      residual = std::max(residual, solveFrictionPair(row, *partner, normal));
+    } else {
+      row.m_lowerLimit = -row.m_friction * normal;
+      row.m_upperLimit = row.m_friction * normal;
+      residual = std::max(residual, solveBoundedRow(row));
+    }
+  }
+  // Rolling and spinning friction as Bullet bounds them: by the normal
+  // impulse times the coefficient, and never beyond the coefficient itself.
+  for (int i = 0; i < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++i) {
+    btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[i];
+    const btScalar normal = m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
+    if (normal <= 0) continue;
+    const btScalar bound = std::min(row.m_friction * normal, row.m_friction);
+    row.m_lowerLimit = -bound;
+    row.m_upperLimit = bound;
+    residual = std::max(residual, solveBoundedRow(row));
+  }
+  return residual;
+}
+
+}  // namespace brick_stack_sim

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+
+namespace brick_stack_sim {
+
+/// Bullet's sequential-impulse solver with Coulomb's friction cone.
+///
+/// Bullet solves a contact's friction along one direction, that of the
+/// sliding velocity however small, so nothing holds a brick across it: a
+/// pile of planks at rest creeps, losing potential energy with no kinetic
+/// energy to speak of, and never falls asleep. With Bullet's second direction
+/// (SOLVER_USE_2_FRICTION_DIRECTIONS) each direction is clamped on its own
+/// to [-mu N, mu N], a square that holds up to 1.41 times what Coulomb's
+/// cone holds, so bricks rest in Bullet that statics finds sliding.
+///
+/// Here the two directions of a contact point are solved as a pair, from
+/// what both would need to stop the point's slip together. Where that lies
+/// inside the cone (radius mu N, N the normal impulse of this iteration)
+/// the point sticks, and each row is solved as Bullet solves it, pulled back
+/// onto the cone if the second took the pair out. Where it lies outside,
+/// the point slides, and its friction opposes the slip at mu N. A brick
+/// then holds across the slip as well as along it, never more than the
+/// cone allows (what the statics LP assumes), and slides as Coulomb says
+/// in any direction: friction directions clamped one at a time would stop
+/// a plank sliding at 45 degrees to them after 71 % of its way.
+///
+/// The solver mode must have SOLVER_USE_2_FRICTION_DIRECTIONS and must not
+/// interleave contacts and friction nor randomise the order; else, and in a
+/// world with joints (this package adds none), Bullet's own iteration runs.
+class ConeFrictionSolver : public btSequentialImpulseConstraintSolver {
+ protected:
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int num_bodies,
+                                btPersistentManifold** manifolds, int num_manifolds,
+                                btTypedConstraint** constraints, int num_constraints,
+                                const btContactSolverInfo& info, btIDebugDraw* debug) override;
+
+ private:
+  /// The friction rows of one contact point, `first` and `second`, with the
+  /// normal impulse `normal` [N s]. The largest squared residual of the two
+  /// rows, Bullet's measure of an iteration's change.
+  btScalar solveFrictionPair(btSolverConstraint& first, btSolverConstraint& second,
+                             btScalar normal);
+  /// A row with its bounds already set, as Bullet solves it; its squared
+  /// residual.
+  btScalar solveBoundedRow(btSolverConstraint& row);
+};
+
+}  // namespace brick_stack_sim
