@@ -224,11 +224,7 @@ bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
   SupportGraph what_if = graph_.componentsOf(supporters);
   for (std::size_t i = 0; i < bodies.size(); ++i)
     join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
-  // While a brick that moves still presses on it, what statics says now
-  // may not hold a step on (a collapse that has not ended).
-  for (BodyHandle brick : what_if.bricks())
-    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
-      return false;
+  if (pressedByMovers(what_if)) return false;
   return criterion_->check(&what_if, what_if.bricks()).empty();
 }
 

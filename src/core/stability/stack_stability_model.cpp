@@ -125,6 +125,13 @@ bool StackStabilityModel::moves(BodyHandle body) const {
   return !std::binary_search(resting_.begin(), resting_.end(), body);
 }
 
+bool StackStabilityModel::pressedByMovers(const SupportGraph& what_if) const {
+  for (BodyHandle brick : what_if.bricks())
+    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
+      return true;
+  return false;
+}
+
 void StackStabilityModel::measureLoads(const StabilityInput& input) {
   resting_.clear();
   for (const BodyMotion& body : input.movers)
@@ -288,9 +295,7 @@ bool StackStabilityModel::standsWithMargin(const BodyMotion& body, const BrickSt
   BrickStability loaded = stability;
   loaded.external_loads = loads_.on(body.handle);
   const SupportGraph what_if = joinedCopy(body, loaded, decision);
-  for (BodyHandle brick : what_if.bricks())
-    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
-      return false;
+  if (pressedByMovers(what_if)) return false;
   const StaticsSolution solution =
       assembleStatics(what_if, what_if.bricks(), options_, kRefreezeLoadFactor).solve();
   return solution.solved && solution.feasible;

@@ -122,6 +122,10 @@ class StackStabilityModel : public StabilityModel {
   std::vector<BodyHandle> resting_;
   /// Whether `body`, a source of measured loads, is not among resting_.
   bool moves(BodyHandle body) const;
+  /// Whether a brick that moves presses on a brick of `what_if`: then what
+  /// statics says of it now may not hold a step on (a collapse that has not
+  /// ended).
+  bool pressedByMovers(const SupportGraph& what_if) const;
   std::uint64_t steps_ = 0;  ///< Steps the model has seen.
   /// When each frozen brick last took a changed load into its statics.
   std::unordered_map<BodyHandle, std::uint64_t> loads_judged_at_;
