@@ -12,6 +12,8 @@
 #include <thread>
 #include <vector>
 
+#include "brick_stack_sim/client/pose_msg.h"
+
 namespace brick_stack_sim {
 namespace node_bench {
 
@@ -114,15 +116,6 @@ bool settle(client::SimClient& sim, const std::string& scene, int bricks) {
   return false;
 }
 
-geometry_msgs::Pose pose(double x, double y, double z, double yaw) {
-  geometry_msgs::Pose p;
-  p.position.x = x;
-  p.position.y = y;
-  p.position.z = z;
-  p.orientation.z = std::sin(yaw / 2);
-  p.orientation.w = std::cos(yaw / 2);
-  return p;
-}
 
 /// A plank at rest on top of the structure's height, on a grid over the
 /// towers and the gaps around them, turned along x or y in turn.
@@ -131,7 +124,7 @@ std::vector<geometry_msgs::Pose> queryPoses() {
   const double z = (kTowerLayers + 0.5) * kPlankHeight;
   for (int i = 0; i < kQueryGrid[0]; ++i)
     for (int j = 0; j < kQueryGrid[1]; ++j)
-      poses.push_back(pose(-kQueryHalfExtent + 2 * kQueryHalfExtent * i / (kQueryGrid[0] - 1),
+      poses.push_back(client::poseAt(-kQueryHalfExtent + 2 * kQueryHalfExtent * i / (kQueryGrid[0] - 1),
                            -kQueryHalfExtent + 2 * kQueryHalfExtent * j / (kQueryGrid[1] - 1), z,
                            (i + j) % 2 ? M_PI / 2 : 0.0));
   return poses;
@@ -179,7 +172,7 @@ SimulatePlan::Request planOnTop(int columns, int rows) {
     step.at = kPlanInterval * k;
     step.id = "plan" + std::to_string(k);
     // The tower's top layer lies along x; the next one across it, along y.
-    step.pose = pose(x + (k % 2 ? offset : -offset), y,
+    step.pose = client::poseAt(x + (k % 2 ? offset : -offset), y,
                      (kTowerLayers + 0.5) * kPlankHeight + kReleaseHeight, M_PI / 2);
     request.steps.push_back(step);
   }

@@ -22,22 +22,14 @@
 #include <ros/ros.h>
 #include <ros/service_traits.h>
 
+#include "brick_stack_sim/client/pose_msg.h"
 #include "brick_stack_sim/client/sim_client.h"
 #include "brick_stack_sim/ros/interface_names.h"
 
 namespace brick_stack_sim {
 namespace test {
 
-/// A pose at (x, y, z) [m], turned by `yaw` [rad] about z, frame world.
-inline geometry_msgs::Pose poseAt(double x, double y, double z, double yaw = 0.0) {
-  geometry_msgs::Pose pose;
-  pose.position.x = x;
-  pose.position.y = y;
-  pose.position.z = z;
-  pose.orientation.z = std::sin(yaw / 2);
-  pose.orientation.w = std::cos(yaw / 2);
-  return pose;
-}
+using client::poseAt;
 
 /// The node's response in `reply`, expecting that the call reached the node.
 template <typename Response>
