@@ -116,7 +116,6 @@ bool settle(client::SimClient& sim, const std::string& scene, int bricks) {
   return false;
 }
 
-
 /// A plank at rest on top of the structure's height, on a grid over the
 /// towers and the gaps around them, turned along x or y in turn.
 std::vector<geometry_msgs::Pose> queryPoses() {
@@ -124,9 +123,10 @@ std::vector<geometry_msgs::Pose> queryPoses() {
   const double z = (kTowerLayers + 0.5) * kPlankHeight;
   for (int i = 0; i < kQueryGrid[0]; ++i)
     for (int j = 0; j < kQueryGrid[1]; ++j)
-      poses.push_back(client::poseAt(-kQueryHalfExtent + 2 * kQueryHalfExtent * i / (kQueryGrid[0] - 1),
-                           -kQueryHalfExtent + 2 * kQueryHalfExtent * j / (kQueryGrid[1] - 1), z,
-                           (i + j) % 2 ? M_PI / 2 : 0.0));
+      poses.push_back(
+          client::poseAt(-kQueryHalfExtent + 2 * kQueryHalfExtent * i / (kQueryGrid[0] - 1),
+                         -kQueryHalfExtent + 2 * kQueryHalfExtent * j / (kQueryGrid[1] - 1), z,
+                         (i + j) % 2 ? M_PI / 2 : 0.0));
   return poses;
 }
 
@@ -173,7 +173,7 @@ SimulatePlan::Request planOnTop(int columns, int rows) {
     step.id = "plan" + std::to_string(k);
     // The tower's top layer lies along x; the next one across it, along y.
     step.pose = client::poseAt(x + (k % 2 ? offset : -offset), y,
-                     (kTowerLayers + 0.5) * kPlankHeight + kReleaseHeight, M_PI / 2);
+                               (kTowerLayers + 0.5) * kPlankHeight + kReleaseHeight, M_PI / 2);
     request.steps.push_back(step);
   }
   request.duration = kPlanDuration;

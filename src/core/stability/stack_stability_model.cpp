@@ -127,8 +127,7 @@ bool StackStabilityModel::moves(BodyHandle body) const {
 
 bool StackStabilityModel::pressedByMovers(const SupportGraph& what_if) const {
   for (BodyHandle brick : what_if.bricks())
-    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty())
-      return true;
+    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty()) return true;
   return false;
 }
 
