@@ -220,28 +220,29 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
     }
   }
   admitRestingGroups(index, &resting, decisions);
-  // What was refused is asked again on the model's clock, one to two rest
-  // windows on, at a tick shared by every mover: bricks that only stand
-  // together are then due together, and their group is judged. On clocks
-  // of their own they were refused one by one for ever.
-  double wait = options_.rest_time;
-  if (input.dt > 0.0) {
-    const std::uint64_t window = std::max<std::uint64_t>(
-        1, static_cast<std::uint64_t>(std::llround(options_.rest_time / input.dt)));
-    // Ticks two windows apart, not one: re-asked every other window on
-    // ticks one window apart, bricks first refused in odd and even windows
-    // were never due together.
-    const std::uint64_t period = 2 * window;
-    const std::uint64_t tick = ((steps_ + window) / period + 1) * period;
-    // Half a step short, so that sums of dt that round differently still
-    // fall due in the tick's step.
-    wait = (static_cast<double>(tick - steps_) - 0.5) * input.dt;
-  }
+  // What was refused is asked again at a tick shared by every mover.
+  const double wait = untilSharedTick(input.dt);
   for (const BodyMotion* body : resting) {
     if (!body) continue;
     RestTracker::Mover& mover = rest_.record(body->handle);
     mover.next_judgement = mover.rest_time + wait;
   }
+}
+
+double StackStabilityModel::untilSharedTick(double dt) const {
+  // One to three rest windows on, at a tick of the model's clock shared by
+  // every mover: bricks that only stand together are then due together,
+  // and their group is judged. On clocks of their own they were refused
+  // one by one for ever; on ticks one window apart, asked every other one,
+  // bricks first refused in odd and even windows never met.
+  if (!(dt > 0.0)) return options_.rest_time;
+  const std::uint64_t window =
+      std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(options_.rest_time / dt)));
+  const std::uint64_t period = 2 * window;
+  const std::uint64_t tick = ((steps_ + window) / period + 1) * period;
+  // Half a step short, so that sums of dt that round differently still
+  // fall due in the tick's step.
+  return (static_cast<double>(tick - steps_) - 0.5) * dt;
 }
 
 void StackStabilityModel::admitRestingGroups(const ContactIndex& index,

@@ -120,6 +120,9 @@ class StackStabilityModel : public StabilityModel {
   ContactLoads loads_;
   /// The movers at rest in the last step measured, in handle order.
   std::vector<BodyHandle> resting_;
+  /// How long [s] a refused mover waits, on a step of `dt` [s], until the
+  /// next tick at which every refused mover is asked again.
+  double untilSharedTick(double dt) const;
   /// Whether `body`, a source of measured loads, is not among resting_.
   bool moves(BodyHandle body) const;
   /// Whether a brick that moves presses on a brick of `what_if`: then what
