@@ -323,6 +323,8 @@ void writeBrickOutcomes(const RunReport& r, JsonWriter& json) {
     json.key("position").numbers(b.pose.translation().data(), 3);
     json.key("orientation").numbers(orientation, 4);
     json.key("state").value(toString(b.state));
+    json.key("linear_velocity").numbers(b.linear_velocity.data(), 3);
+    json.key("angular_velocity").numbers(b.angular_velocity.data(), 3);
     json.key("fell_off").value(b.fell_off);
     json.key("displacement").value(outcome.displacement);
     json.key("rotation").value(outcome.rotation);

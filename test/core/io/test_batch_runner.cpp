@@ -55,6 +55,8 @@ TEST(BatchRunner, ReportHasTheContractKeys) {
                           "\"position\": [",
                           "\"orientation\": [",
                           "\"state\": \"dynamic\"",
+                          "\"linear_velocity\": [",
+                          "\"angular_velocity\": [",
                           "\"displacement\": ",
                           "\"rotation\": ",
                           "\"events\": [",
