@@ -70,32 +70,26 @@ btScalar ConeFrictionSolver::solveFrictionPair(btSolverConstraint& first,
   if (limit_first <= 0 || limit_second <= 0)  // no cone to project on: each row alone
     return std::max(solveBoundedRow(first), solveBoundedRow(second));
 
-  // What both rows would need to stop the slip, from the same velocities.
-  btScalar total_first = first.m_appliedImpulse + unboundedChange(first, a, b);
-  btScalar total_second = second.m_appliedImpulse + unboundedChange(second, a, b);
-  if (reach(total_first, total_second, limit_first, limit_second) <= 1) {
-    // It sticks: each row the least change that cancels its own velocity
-    // error, which never adds energy.
-    const btScalar residual = std::max(solveBoundedRow(first), solveBoundedRow(second));
-    if (reach(first.m_appliedImpulse, second.m_appliedImpulse, limit_first, limit_second) <= 1)
-      return residual;
-    // The second row's change took the pair out: back onto the section.
-    total_first = first.m_appliedImpulse;
-    total_second = second.m_appliedImpulse;
-    pullOntoSection(&total_first, &total_second, limit_first, limit_second);
-    const btScalar pulled_first = applyTotal(first, a, b, total_first);
-    const btScalar pulled_second = applyTotal(second, a, b, total_second);
-    return std::max({residual, pulled_first * pulled_first, pulled_second * pulled_second});
-  }
-  // Sliding: friction against the slip, at the cone's edge.
-  const btScalar slip_first = (total_first - first.m_appliedImpulse) / first.m_jacDiagABInv;
-  const btScalar slip_second = (total_second - second.m_appliedImpulse) / second.m_jacDiagABInv;
-  const btScalar slip = std::sqrt(slip_first * slip_first + slip_second * slip_second);
-  if (slip > 0) {
-    total_first = limit_first * slip_first / slip;
-    total_second = limit_second * slip_second / slip;
-  } else {
-    pullOntoSection(&total_first, &total_second, limit_first, limit_second);
+  // What each row would need to stop the point's slip, both from the same
+  // velocities. Inside the cone the point sticks with exactly that.
+  const btScalar change_first = unboundedChange(first, a, b);
+  const btScalar change_second = unboundedChange(second, a, b);
+  btScalar total_first = first.m_appliedImpulse + change_first;
+  btScalar total_second = second.m_appliedImpulse + change_second;
+  if (reach(total_first, total_second, limit_first, limit_second) > 1) {
+    // It slides. Each row's own effective mass would tilt the change away
+    // from the slip (a long plank turns more easily about one axis than the
+    // other, and bends its path); with the smaller of the two the change
+    // opposes the slip. Added to this step's friction and scaled back onto
+    // the cone's edge, it turns the friction towards the slip over the
+    // iterations instead of swinging it there in one: a point near rest
+    // whose tiny slip changes direction each iteration would otherwise be
+    // kicked sideways at mu N each time, and never come to rest.
+    const btScalar mass = std::min(first.m_jacDiagABInv, second.m_jacDiagABInv);
+    total_first = first.m_appliedImpulse + change_first * (mass / first.m_jacDiagABInv);
+    total_second = second.m_appliedImpulse + change_second * (mass / second.m_jacDiagABInv);
+    if (reach(total_first, total_second, limit_first, limit_second) > 1)
+      pullOntoSection(&total_first, &total_second, limit_first, limit_second);
   }
   const btScalar residual_first = applyTotal(first, a, b, total_first);
   const btScalar residual_second = applyTotal(second, a, b, total_second);

@@ -14,16 +14,20 @@ namespace brick_stack_sim {
 /// to [-mu N, mu N], a square that holds up to 1.41 times what Coulomb's
 /// cone holds, so bricks rest in Bullet that statics finds sliding.
 ///
-/// Here the two directions of a contact point are solved as a pair, from
-/// what both would need to stop the point's slip together. Where that lies
-/// inside the cone (radius mu N, N the normal impulse of this iteration)
-/// the point sticks, and each row is solved as Bullet solves it, pulled back
-/// onto the cone if the second took the pair out. Where it lies outside,
-/// the point slides, and its friction opposes the slip at mu N. A brick
-/// then holds across the slip as well as along it, never more than the
-/// cone allows (what the statics LP assumes), and slides as Coulomb says
-/// in any direction: friction directions clamped one at a time would stop
-/// a plank sliding at 45 degrees to them after 71 % of its way.
+/// Here the two directions of a contact point are solved as a pair, both
+/// from the same velocities. Where what they would need to stop the point's
+/// slip lies inside the cone (radius mu N, N the normal impulse of this
+/// iteration) the point sticks with exactly that. Where it lies outside, the
+/// point slides: the change, taken with one effective mass for both rows so
+/// that it opposes the slip, is added to the friction so far and the sum
+/// scaled back onto the cone's edge. A brick then holds across the slip as
+/// well as along it, never more than the cone allows (what the statics LP
+/// assumes), and slides as Coulomb says in any direction: friction directions
+/// clamped one at a time would stop a plank sliding at 45 degrees to them
+/// after 71 % of its way. Turning the friction onto the slip a step at a time
+/// rather than at once is what lets a point near rest stay there: a tiny
+/// slip that changes direction each iteration would otherwise swing a
+/// friction of mu N round with it, a sideways kick each time.
 ///
 /// The solver mode must have SOLVER_USE_2_FRICTION_DIRECTIONS and must not
 /// interleave contacts and friction nor randomise the order; else, and in a
