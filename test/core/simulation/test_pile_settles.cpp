@@ -129,6 +129,15 @@ class EventLog {
   std::vector<SimEvent> events_;
 };
 
+/// Steps `world` for the pile's settling time, keeping every event in `log`.
+void settle(BrickWorld* world, EventLog* log) {
+  const long steps = std::lround(kSettleTime / world->options().time_step);
+  for (long i = 0; i < steps; ++i) {
+    world->step();
+    log->take(world);
+  }
+}
+
 std::string describe(const BrickSnapshot& brick) {
   std::ostringstream text;
   const Eigen::Vector3d& p = brick.pose.translation();
@@ -159,11 +168,7 @@ TEST_P(PileSettles, ADroppedPileEndsAtRestOnTheTableWithNoBrickLost) {
   std::unique_ptr<BrickWorld> world = droppedPile(mode);
   ASSERT_EQ(world->brickCount(), static_cast<std::size_t>(kPileBricks));
   EventLog log;
-  const long steps = std::lround(kSettleTime / world->options().time_step);
-  for (long i = 0; i < steps; ++i) {
-    world->step();
-    log.take(world.get());
-  }
+  settle(world.get(), &log);
   EXPECT_EQ(world->brickCount(), static_cast<std::size_t>(kPileBricks));
   EXPECT_EQ(log.count(SimEventKind::kLost), 0);
   EXPECT_EQ(log.count(SimEventKind::kRemoved), 0);
@@ -333,11 +338,7 @@ TEST(PileSettlesWithTheFrictionCone, PlainBulletPutsEveryPlankToSleep) {
   options.friction_cone = true;
   std::unique_ptr<BrickWorld> world = droppedPile(options);
   EventLog log;
-  const long steps = std::lround(kSettleTime / world->options().time_step);
-  for (long i = 0; i < steps; ++i) {
-    world->step();
-    log.take(world.get());
-  }
+  settle(world.get(), &log);
   EXPECT_EQ(world->brickCount(), static_cast<std::size_t>(kPileBricks));
   EXPECT_EQ(log.count(SimEventKind::kNonFinite), 0);
   for (const BrickSnapshot& brick : world->snapshot()) {
