@@ -24,9 +24,9 @@ namespace brick_stack_sim {
 /// well as along it, never more than the cone allows (what the statics LP
 /// assumes), and slides as Coulomb says in any direction: friction directions
 /// clamped one at a time would stop a plank sliding at 45 degrees to them
-/// after 71 % of its way. Turning the friction onto the slip a step at a time
-/// rather than at once is what lets a point near rest stay there: a tiny
-/// slip that changes direction each iteration would otherwise swing a
+/// after 71 % of its way. Turning the friction onto the slip over the
+/// iterations rather than at once is what lets a point near rest stay there:
+/// a tiny slip that changes direction each iteration would otherwise swing a
 /// friction of mu N round with it, a sideways kick each time.
 ///
 /// The solver mode must have SOLVER_USE_2_FRICTION_DIRECTIONS and must not
