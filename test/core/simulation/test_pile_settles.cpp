@@ -177,15 +177,15 @@ TEST_P(PileSettles, ADroppedPileEndsAtRestOnTheTableWithNoBrickLost) {
   for (const BrickSnapshot& brick : world->snapshot()) {
     ASSERT_TRUE(brick.pose.matrix().allFinite()) << brick.id;
     EXPECT_TRUE(onTableOrFloor(brick, world->options().table)) << describe(brick);
-    // Plain Bullet does not bring this pile to rest: it applies static
-    // friction along one direction per contact point, that of the sliding
-    // velocity however small, so nothing holds a plank across it and the
-    // pile creeps (25 of these 40 planks still awake after 5 s, one 32 mm
-    // on by 20 s). What the models bring is the freeze.
-    if (model) {
-      EXPECT_TRUE(atRest(brick, model)) << "in mode " << mode << " at t=" << world->time()
-                                        << " s: " << describe(brick) << log.about(brick.id);
-    }
+    // Held to the cone in two directions, friction holds a plank across its
+    // slip as well as along it, so even plain Bullet brings the pile to
+    // rest: every plank still for Bullet's sleeping time. With Bullet's own
+    // friction, along the slip alone, the pile creeps (25 of these 40
+    // planks still awake after 5 s, one 32 mm on by 20 s). It must stay
+    // still, too: a point near rest whose friction swung round with a tiny
+    // slip would kick its plank each step and keep its island awake.
+    EXPECT_TRUE(atRest(brick, model)) << "in mode " << mode << " at t=" << world->time()
+                                      << " s: " << describe(brick) << log.about(brick.id);
   }
   // With a model, a pile at rest costs nothing more: a step only advances the clock.
   if (model) {
@@ -212,23 +212,29 @@ double mechanicalEnergy(const BrickWorld& world) {
 
 TEST_P(PileSettles, TheDroppedPileOnlyLosesEnergy) {
   // Planks that do not bounce (restitution 0) and rub with friction only
-  // lose energy: a step that gains some is the solver pushing bricks apart
-  // (penetration corrected into velocity), which is what scatters a pile.
-  // Bullet's error reduction may lift a brick out of a shallow overlap by
-  // a fraction of a millimetre: 0.1 mm of a 6 g plank is 6 uJ.
+  // lose energy: energy that rises above the lowest it has been is the
+  // solver pushing bricks apart, which is what scatters a pile. Only split
+  // impulse may lift a brick back out of an overlap it sank into on
+  // landing (a plank landing at 1.9 m/s moves 1.9 mm a step): 1 mm of
+  // a 6 g plank is 59 uJ. The rise above the lowest energy so far counts
+  // what was put in over any stretch of steps; a sum of every step's gain
+  // would also count planks at rest bobbing by tens of nanometres a step,
+  // which puts nothing in (this pile at rest stays within 2 uJ of one
+  // energy for seconds while such a sum grows by hundreds).
   std::unique_ptr<BrickWorld> world = droppedPile(GetParam());
   const double start = mechanicalEnergy(*world);
-  double previous = start, gained = 0.0;
+  double lowest = start, largest_rise = 0.0, energy = start;
   const long steps = std::lround(kSettleTime / world->options().time_step);
   for (long i = 0; i < steps; ++i) {
     world->step();
-    const double energy = mechanicalEnergy(*world);
-    gained += std::max(0.0, energy - previous);
-    previous = energy;
+    energy = mechanicalEnergy(*world);
+    lowest = std::min(lowest, energy);
+    largest_rise = std::max(largest_rise, energy - lowest);
   }
-  const double lost = start - previous;
+  const double lost = start - energy;
   EXPECT_GT(lost, 0.0);
-  EXPECT_LT(gained, 1e-3 * lost) << "gained " << gained << " J while losing " << lost << " J";
+  EXPECT_LT(largest_rise, 1e-3 * lost)
+      << "rose by " << largest_rise << " J above its lowest while losing " << lost << " J";
 }
 
 /// How far a brick moved from `before` to `after`: its centre [m] and its turn [rad].
@@ -325,26 +331,6 @@ TEST_P(PileSettles, TheFirstBricksToFreezeAreBitForBitWhereBulletPutThem) {
     if (any_frozen) return;
   }
   FAIL() << "no brick froze in " << kSettleTime << " s";
-}
-
-TEST(PileSettlesWithTheFrictionCone, PlainBulletPutsEveryPlankToSleep) {
-  // Held to the cone in two directions, friction holds a plank across its
-  // slip as well as along it, so the pile that creeps with Bullet's own
-  // friction comes to rest without a model: every plank still for
-  // Bullet's sleeping time. It must stay still: a point near rest whose
-  // friction swung round with a tiny slip would kick its plank each step
-  // and keep its island awake.
-  WorldOptions options = test::optionsFor("none");
-  options.friction_cone = true;
-  std::unique_ptr<BrickWorld> world = droppedPile(options);
-  EventLog log;
-  settle(world.get(), &log);
-  EXPECT_EQ(world->brickCount(), static_cast<std::size_t>(kPileBricks));
-  EXPECT_EQ(log.count(SimEventKind::kNonFinite), 0);
-  for (const BrickSnapshot& brick : world->snapshot()) {
-    EXPECT_TRUE(onTableOrFloor(brick, world->options().table)) << describe(brick);
-    EXPECT_TRUE(atRest(brick, false)) << "at t=" << world->time() << " s: " << describe(brick);
-  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PileSettles, testing::ValuesIn(test::allModes()), test::modeName);

@@ -60,20 +60,20 @@ TEST_P(MotionInMode, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
   }
 }
 
-TEST(MotionWithFrictionCone, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
-  // Friction held to the cone in two directions must leave sliding as
-  // Coulomb's law has it: opposed to the slip at mu N.
+TEST(MotionWithBulletsFriction, EveryMotionWithAClosedFormLandsWithinTwoPercentOfIt) {
+  // Bullet's own friction, along the slip alone (friction_cone: false),
+  // must leave the model's motions as Coulomb's law has them too. Plain
+  // Bullet is the baseline, held to nothing: with this friction its
+  // incline slide falls 2.6 % short (0.24 % with the cone).
   const BrickTypeLibrary types = test::packageTypes();
-  for (const char* mode : {"none", "com"}) {
-    WorldOptions world = test::optionsFor(mode);
-    world.friction_cone = true;
-    for (const Closed& c :
-         {Closed{MotionCase::kSlide, 1.0}, Closed{MotionCase::kIncline, 0.3},
-          Closed{MotionCase::kTopple, 0.8}, Closed{MotionCase::kFreeFlight, 0.35}}) {
-      const double expected = motionExpected(c.motion, types, TableOptions(), world.gravity);
-      EXPECT_NEAR(measure(c.motion, world, c.duration) / expected, 1.0, 0.02)
-          << motionCaseName(c.motion) << " in " << mode;
-    }
+  WorldOptions world = test::optionsFor("com");
+  world.friction_cone = false;
+  for (const Closed& c :
+       {Closed{MotionCase::kSlide, 1.0}, Closed{MotionCase::kIncline, 0.3},
+        Closed{MotionCase::kTopple, 0.8}, Closed{MotionCase::kFreeFlight, 0.35}}) {
+    const double expected = motionExpected(c.motion, types, TableOptions(), world.gravity);
+    EXPECT_NEAR(measure(c.motion, world, c.duration) / expected, 1.0, 0.02)
+        << motionCaseName(c.motion);
   }
 }
 

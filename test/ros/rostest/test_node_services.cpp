@@ -372,7 +372,11 @@ TEST_F(NodeServices, ASceneOverTheBrickCapIsRefusedBeforeItIsBuilt) {
   const std::vector<Brick> after = bricks();
   ASSERT_EQ(after.size(), 1u);
   EXPECT_EQ(after[0].id, "keep");
-  EXPECT_EQ(after[0].pose.position.x, before[0].pose.position.x);
+  // Untouched by the refused reset. In plain Bullet a brick placed at rest
+  // drifts by picometres, the solver's residual, until Bullet puts it to
+  // sleep: a reset would have moved or removed it.
+  EXPECT_NEAR(after[0].pose.position.x, before[0].pose.position.x, 1e-9);
+  EXPECT_NEAR(after[0].pose.position.y, before[0].pose.position.y, 1e-9);
   std::remove(path.c_str());
 }
 

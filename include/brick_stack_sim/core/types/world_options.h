@@ -71,10 +71,10 @@ struct WorldOptions {
   double split_impulse_penetration_threshold = -0.0004;
   double erp = 0.2;                ///< Error reduction per step for contacts [-].
   /// Friction held to Coulomb's cone in two directions across a contact
-  /// (true; not yet the default, docs/design.md, "Bullet at brick scale"),
-  /// or Bullet's own: one direction, that of the slip, along which a pile
+  /// (true, the default: docs/design.md, "Bullet at brick scale"), or
+  /// Bullet's own: one direction, that of the slip, along which a pile
   /// creeps (false).
-  bool friction_cone = false;
+  bool friction_cone = true;
   double collision_margin = 1e-4;  ///< Box collision margin [m], inside the box.
 
   /// A placement that would sink this deep into another brick is refused [m].
