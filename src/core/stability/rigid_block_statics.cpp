@@ -14,6 +14,11 @@ namespace {
 /// mechanism; below it is the simplex's rounding.
 constexpr double kMoving = 1e-7;
 
+/// Sine of a contact normal's tilt from vertical [-] above which its
+/// pyramid is turned to the slope (1.1 degrees): on flatter contacts a
+/// brick's weight asks for at most 2 % of the normal force in friction.
+constexpr double kTiltedContact = 0.02;
+
 /// The LP in Clp's column form. Rows: 6 per free body (force x, y, z, then
 /// torque about its COM x, y, z), in units of the largest load on a free
 /// body (its weight or an applied force) and (for torques) the problem's size, so Clp's absolute
@@ -171,9 +176,14 @@ class EquilibriumLp {
 std::vector<Eigen::Vector3d> coneEdges(const StaticsContact& c, int faces) {
   const Eigen::Vector3d n = c.normal.normalized();
   if (c.friction <= 0.0) return {n};
-  // Edges along the world axes projected on the contact plane: exact for
-  // friction along a brick's axes, the usual direction in a stack.
-  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - n.x() * n;
+  // On a tilted contact an edge lies along the plane's steepest slope: the
+  // friction that holds a brick's weight there is exact, as Coulomb's cone
+  // holds it, not cos(pi / faces) of it (a plank lying on a leaning one
+  // near the friction angle, which the engine holds, was refused).
+  // Elsewhere the edges follow the world axes projected on the plane:
+  // exact for friction along a brick's axes, the usual direction in a stack.
+  Eigen::Vector3d t1 = Eigen::Vector3d::UnitZ() - n.z() * n;
+  if (t1.norm() < kTiltedContact) t1 = Eigen::Vector3d::UnitX() - n.x() * n;
   if (t1.norm() < 0.3) t1 = Eigen::Vector3d::UnitY() - n.y() * n;
   t1.normalize();
   const Eigen::Vector3d t2 = n.cross(t1);

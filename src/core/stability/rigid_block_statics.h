@@ -41,10 +41,12 @@ struct StaticsContact {
 };
 
 struct StaticsOptions {
-  /// Faces of the pyramid inscribed in each friction cone (>= 4). Its edges
-  /// lie along the world x and y axes projected on the contact plane, so
-  /// friction along a brick's axes is exact; between them the cone is cut
-  /// by at most 1 - cos(pi / faces) (7.6 % at 8 faces).
+  /// Faces of the pyramid inscribed in each friction cone (>= 4). On a
+  /// tilted contact an edge lies along the plane's steepest slope, so the
+  /// friction that holds a weight on it is exact; on a flat one the edges
+  /// lie along the world x and y axes projected on it, so friction along a
+  /// brick's axes is exact. Between edges the cone is cut by at most
+  /// 1 - cos(pi / faces) (7.6 % at 8 faces).
   int friction_faces = 8;
   double gravity = 9.81;  ///< [m/s^2], along -z.
   /// A uniform acceleration every free body must also resist [m/s^2], world

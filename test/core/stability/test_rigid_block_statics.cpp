@@ -132,6 +132,40 @@ TEST(RigidBlockStatics, OnePlankOfAVAloneFalls) {
   EXPECT_FALSE(scene.stands());
 }
 
+/// A plank lying on a fixed slab tilted by `tilt` about a horizontal axis,
+/// the slope's downhill direction at `heading` from the world x axis.
+StaticsScene plankOnATiltedSlab(double mu, double tilt, double heading) {
+  StaticsScene scene(mu);
+  Eigen::Isometry3d slab = Eigen::Isometry3d::Identity();
+  slab.linear() = (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()))
+                      .toRotationMatrix();
+  slab.translation() = Eigen::Vector3d(0.0, 0.0, 0.3);  // clear of the table
+  const Eigen::Vector3d slab_half(0.2, 0.2, 0.01);
+  scene.add(slab, 10 * kKaplaMass, /*fixed=*/true, slab_half);
+  Eigen::Isometry3d plank = slab;
+  plank.translation() +=
+      slab.linear() * Eigen::Vector3d(0.0, 0.0, slab_half.z() + 0.5 * kKaplaThickness);
+  scene.add(plank);
+  return scene;
+}
+
+TEST(RigidBlockStatics, FrictionHoldsAPlankOnASlopeUpToTheFrictionAngleInAnyHeading) {
+  // Coulomb: a block on an incline stands while tan(tilt) < mu, whatever
+  // way the slope faces. The pyramid cut from the cone must not refuse
+  // it short of that (a heading between two of its edges once held only
+  // cos(pi / 8) of mu, 7.6 % short).
+  const double mu = 0.5;
+  const double friction_angle = std::atan(mu);
+  for (double heading : {0.0, M_PI / 8.0, 1.0, 0.75 * M_PI}) {
+    for (double factor : {0.97, 1.03}) {
+      const StaticsScene scene = plankOnATiltedSlab(mu, factor * friction_angle, heading);
+      EXPECT_EQ(scene.stands(), factor < 1.0) << "heading " << heading << ", " << factor
+                                              << " x the friction angle";
+    }
+  }
+}
+
 class Ladder : public ::testing::TestWithParam<double> {};
 
 TEST_P(Ladder, PlankAgainstAHeavyBlockStandsByItsOwnFormula) {
