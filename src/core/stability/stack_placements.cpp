@@ -222,6 +222,10 @@ bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
     for (BodyHandle supporter : supportersOf(s))
       if (graph_.contains(supporter)) supporters.push_back(supporter);
   SupportGraph what_if = graph_.componentsOf(supporters);
+  std::vector<BodyHandle> joiners;
+  for (const BodyMotion& body : bodies) joiners.push_back(body.handle);
+  std::sort(joiners.begin(), joiners.end());
+  unloadJoiners(&what_if, joiners);
   for (std::size_t i = 0; i < bodies.size(); ++i)
     join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
   if (pressedByMovers(what_if)) return false;

@@ -131,6 +131,18 @@ bool StackStabilityModel::pressedByMovers(const SupportGraph& what_if) const {
   return false;
 }
 
+void StackStabilityModel::unloadJoiners(SupportGraph* what_if,
+                                        const std::vector<BodyHandle>& joiners) const {
+  const auto joins = [&](BodyHandle source) {
+    return std::binary_search(joiners.begin(), joiners.end(), source);
+  };
+  const auto stays_out = [&](BodyHandle source) { return !joins(source); };
+  for (BodyHandle brick : what_if->bricks()) {
+    if (loads_.on(brick, joins).empty()) continue;
+    what_if->find(brick)->stability.external_loads = loads_.on(brick, stays_out);
+  }
+}
+
 void StackStabilityModel::measureLoads(const StabilityInput& input) {
   resting_.clear();
   for (const BodyMotion& body : input.movers)
@@ -305,6 +317,7 @@ SupportGraph StackStabilityModel::joinedCopy(const BodyMotion& body,
                                              const BrickStability& stability,
                                              const FreezeDecision& decision) const {
   SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
+  unloadJoiners(&what_if, {body.handle});
   join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
   return what_if;
 }

@@ -129,6 +129,11 @@ class StackStabilityModel : public StabilityModel {
   /// statics says of it now may not hold a step on (a collapse that has not
   /// ended).
   bool pressedByMovers(const SupportGraph& what_if) const;
+  /// Takes off the frozen bricks of `what_if` the loads measured from
+  /// `joiners` (handle order), bricks at rest that join it: their weight
+  /// now passes through their contacts, and kept as a load too it was
+  /// borne twice.
+  void unloadJoiners(SupportGraph* what_if, const std::vector<BodyHandle>& joiners) const;
   std::uint64_t steps_ = 0;  ///< Steps the model has seen.
   /// When each frozen brick last took a changed load into its statics.
   std::unordered_map<BodyHandle, std::uint64_t> loads_judged_at_;

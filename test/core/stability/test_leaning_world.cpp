@@ -91,6 +91,42 @@ TEST_P(StaticsInMode, AVThatComesToRestInBulletFreezesAsOneGroup) {
   }
 }
 
+TEST_P(StaticsInMode, AVComingToRestOnACantileverThatHoldsItFreezesOnIt) {
+  // A base plank at x = 0 and on it a cantilever C at x = 36 mm, its COM
+  // L/2 - 36 = 22.5 mm inside the base's edge at L/2. A V (the steep one
+  // Bullet holds, its feet within 22 mm of its apex, all on C's top) let
+  // go just above rest with its apex 8.5 mm beyond that edge: about the
+  // edge the V's weight 2 m g tips C with 2 x 8.5 = 17 mm m g against C's
+  // own 22.5 mm m g (the feet's sideways forces cancel), so everything
+  // stands. Counted twice (as the load the resting V puts on C, and
+  // through the V's contacts once it joins), the V would tip C with
+  // 34 mm m g, and it was refused for ever where Bullet held it.
+  const double mu = 0.5;
+  auto world = worldWithFriction(GetParam(), mu);
+  const double offset = 0.036, edge = 0.5 * kKaplaLength, apex_x = edge + 0.0085;
+  ASSERT_TRUE(
+      world->addBrick(test::placement("base", Eigen::Vector3d(0.0, 0.0, 0.5 * kKaplaThickness)))
+          .ok);
+  ASSERT_TRUE(
+      world->addBrick(test::placement("c", Eigen::Vector3d(offset, 0.0, 1.5 * kKaplaThickness)))
+          .ok);
+  test::runFor(world.get(), 0.3);
+  ASSERT_EQ(test::snapshotOf(*world, "c").state, BrickState::kStable);
+  auto [left, right] = test::vPlanks(0.15 * test::vThresholdAngle(mu), apex_x);
+  left.translation().z() += 2.0 * kKaplaThickness;
+  right.translation().z() += 2.0 * kKaplaThickness;
+  BrickPlacement l = at("left", left), r = at("right", right);
+  l.linear_velocity = r.linear_velocity = Eigen::Vector3d(0.0, 0.0, -1e-4);
+  ASSERT_TRUE(world->addBrick(l).ok);
+  ASSERT_TRUE(world->addBrick(r).ok);
+  test::runFor(world.get(), 2.0);
+  EXPECT_EQ(test::snapshotOf(*world, "left").state, BrickState::kLeaning);
+  EXPECT_EQ(test::snapshotOf(*world, "right").state, BrickState::kLeaning);
+  EXPECT_LT(displacement(*world, "left"), 5e-4);
+  EXPECT_EQ(test::snapshotOf(*world, "c").state, BrickState::kStable);
+  EXPECT_EQ(displacement(*world, "c"), 0.0);
+}
+
 /// Forces a frozen brick's contacts carry must hold it in equilibrium with
 /// its weight, within friction and without pulling, to the LP's tolerance.
 void expectBalanced(const test::ForceBalance& balance) {

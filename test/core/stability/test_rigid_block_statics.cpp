@@ -160,8 +160,8 @@ TEST(RigidBlockStatics, FrictionHoldsAPlankOnASlopeUpToTheFrictionAngleInAnyHead
   for (double heading : {0.0, M_PI / 8.0, 1.0, 0.75 * M_PI}) {
     for (double factor : {0.97, 1.03}) {
       const StaticsScene scene = plankOnATiltedSlab(mu, factor * friction_angle, heading);
-      EXPECT_EQ(scene.stands(), factor < 1.0) << "heading " << heading << ", " << factor
-                                              << " x the friction angle";
+      EXPECT_EQ(scene.stands(), factor < 1.0)
+          << "heading " << heading << ", " << factor << " x the friction angle";
     }
   }
 }
