@@ -16,6 +16,7 @@
 #include "bullet/bullet_handles.h"
 #include "bullet/bullet_scene_impl.h"
 #include "bullet/cone_friction_solver.h"
+#include "bullet/flush_box_box_algorithm.h"
 #include "bullet/time_of_impact.h"
 
 namespace brick_stack_sim {
@@ -63,7 +64,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   // step and needs several steps to build a resting patch; a brick lying on
   // another wobbles meanwhile. The box-box clipper returns the whole face patch
   // (up to 4 points) in one step, which is what flat stacking needs.
-  box_box_algorithm = std::make_unique<btBoxBoxCollisionAlgorithm::CreateFunc>();
+  box_box_algorithm = std::make_unique<FlushBoxBoxAlgorithm::CreateFunc>();
   dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
                                           box_box_algorithm.get());
   broadphase = std::make_unique<btDbvtBroadphase>();

@@ -16,8 +16,8 @@
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "support/kapla.h"
-#include "support/world_probe.h"
 #include "support/modes.h"
+#include "support/world_probe.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -123,8 +123,13 @@ TEST_P(LoadsInMode, AHarmonicStackPastItsCriticalOverhangsFallsAsAWhole) {
   // under it: no sub-stack has an equilibrium, and the collapse mechanism
   // is the whole stack. The top brick cannot even rest on the one below
   // (f L / 2 > L / 2); once its load is seen, every brick is woken at once.
-  // What the dynamics then does with the lowest bricks is Bullet's: the
-  // upper half falls off the table, every brick is moved.
+  // Then every joint starts to open at once, each sub-stack's COM
+  // (f - 1) L / 2 = 1.75 mm past its edge. The upper bricks, with the least
+  // inertia over their edges, turn fastest and fall; once they are gone
+  // what is left is within its critical overhangs and stands, so how far
+  // the bottom brick moves first (tens of micrometres to millimetres) is
+  // the dynamics'. Every brick moves (one left frozen would not move at
+  // all), and the upper half falls.
   for (int bricks : {8, 12}) {
     for (double interval : {0.0, 0.25}) {
       SCOPED_TRACE(std::to_string(bricks) + " bricks, placed " + std::to_string(interval) +
@@ -144,7 +149,7 @@ TEST_P(LoadsInMode, AHarmonicStackPastItsCriticalOverhangsFallsAsAWhole) {
           EXPECT_EQ(first_wake[b.brick.id], first_wake[report.bricks.front().brick.id])
               << b.brick.id << " woke apart from the rest of the mechanism";
         }
-        EXPECT_GT(b.displacement, 5e-4) << b.brick.id;
+        EXPECT_GT(b.displacement, 2e-5) << b.brick.id;
         fell += b.brick.fell_off;
       }
       EXPECT_TRUE(report.bricks.back().brick.fell_off);
@@ -203,7 +208,8 @@ TEST_P(LoadsInMode, AHeldBrickPressedOnACantileverTipsItOnlyPastTheStaticsForce)
     ASSERT_TRUE(world->setHeldTarget(pose(on_end + Eigen::Vector3d(0.0, 0.0, 0.01))).ok);
     test::runFor(world.get(), 2.0);
     world->takeEvents();
-    ASSERT_TRUE(world->setHeldTarget(pose(on_end - Eigen::Vector3d(0.0, 0.0, force / stiffness))).ok);
+    ASSERT_TRUE(
+        world->setHeldTarget(pose(on_end - Eigen::Vector3d(0.0, 0.0, force / stiffness))).ok);
     test::runFor(world.get(), 1.0);
     const std::map<std::string, int> wakes = wakesOf(world.get());
     ASSERT_TRUE(world->setHeldTarget(pose(on_end + Eigen::Vector3d(0.0, 0.0, 0.05))).ok);

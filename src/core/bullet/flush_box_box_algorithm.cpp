@@ -1,0 +1,137 @@
+#include "bullet/flush_box_box_algorithm.h"
+
+#include <cmath>
+#include <new>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "bullet/bullet_conversions.h"
+
+namespace brick_stack_sim {
+namespace {
+
+/// Faces closer than this to parallel [rad], and one's centre closer than
+/// kFlushGap [m] to the other's plane, rest flush: the stability layer's
+/// defaults (`flush_angle`, `contact_distance`), where it takes the same
+/// overlap as the contact's patch. Faces further apart are landing or
+/// parting, and Bullet's detector follows them as before.
+constexpr double kFlushAngle = 0.002;
+constexpr double kFlushGap = 1e-4;
+
+OrientedBox orientedBox(const btCollisionObjectWrapper& body) {
+  const auto* shape = static_cast<const btBoxShape*>(body.getCollisionShape());
+  OrientedBox box;
+  box.pose = convertBtToEigen(body.getWorldTransform());
+  // With its margin, as Bullet's detector sees it.
+  box.half_extents = convertBtToEigen(shape->getHalfExtentsWithMargin());
+  return box;
+}
+
+/// Signed distance [m] of `point` from the plane of the face of `box`
+/// turned most towards `direction`; negative inside the box.
+double aboveFace(const OrientedBox& box, const Eigen::Vector3d& direction,
+                 const Eigen::Vector3d& point) {
+  const Eigen::Matrix3d& r = box.pose.linear();
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(r.col(i).dot(direction)) > std::abs(r.col(axis).dot(direction))) axis = i;
+  const Eigen::Vector3d outward = (r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0) * r.col(axis);
+  return (point - box.pose.translation()).dot(outward) - box.half_extents[axis];
+}
+
+/// The four corners of the convex polygon `corners` (in order) that span
+/// the largest area, in order; all of them when there are no more than four.
+/// The first of equal quadrilaterals wins, so the choice is the same every
+/// step while the polygon stays.
+std::vector<Eigen::Vector3d> widestFour(const std::vector<Eigen::Vector3d>& corners,
+                                        const Eigen::Vector3d& normal) {
+  const int n = static_cast<int>(corners.size());
+  if (n <= 4) return corners;
+  // A quadrilateral of a convex polygon's corners taken in order is convex:
+  // twice its area is the cross product of its diagonals.
+  const auto area = [&](int a, int b, int c, int d) {
+    return std::abs((corners[c] - corners[a]).cross(corners[d] - corners[b]).dot(normal));
+  };
+  double widest = -1.0;
+  std::vector<Eigen::Vector3d> chosen;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b)
+      for (int c = b + 1; c < n; ++c)
+        for (int d = c + 1; d < n; ++d)
+          if (area(a, b, c, d) > widest) {
+            widest = area(a, b, c, d);
+            chosen = {corners[a], corners[b], corners[c], corners[d]};
+          }
+  return chosen;
+}
+
+}  // namespace
+
+void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
+                                            const btCollisionObjectWrapper* body1,
+                                            const btDispatcherInfo& info,
+                                            btManifoldResult* result) {
+  btManifoldArray manifolds;
+  getAllContactManifolds(manifolds);
+  if (manifolds.size() == 1 && addFlushCorners(*body0, *body1, manifolds[0], result)) return;
+  btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
+}
+
+bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0,
+                                           const btCollisionObjectWrapper& body1,
+                                           btPersistentManifold* manifold,
+                                           btManifoldResult* result) const {
+  const OrientedBox box0 = orientedBox(body0), box1 = orientedBox(body1);
+  const double reach = manifold->getContactBreakingThreshold();
+  std::vector<Eigen::Vector3d> patch;
+  Eigen::Vector3d normal;  // the lower face's, towards the upper box
+  // Bullet's B is body1: its normal points from body1 towards body0.
+  const bool body1_lower = flushContactPatch(box1, box0, kFlushAngle, kFlushGap, &patch, &normal);
+  if (!body1_lower && !flushContactPatch(box0, box1, kFlushAngle, kFlushGap, &patch, &normal))
+    return false;
+  const OrientedBox& upper = body1_lower ? box0 : box1;
+  struct Corner {
+    Eigen::Vector3d on_lower, on_upper;
+    double depth;  // < 0: penetrating
+  };
+  std::vector<Corner> corners;
+  for (const Eigen::Vector3d& c : widestFour(patch, normal)) {
+    const double depth = aboveFace(upper, -normal, c);
+    if (depth <= reach) corners.push_back({c, c + normal * depth, depth});
+  }
+  if (corners.empty()) return false;
+  // Points the corners will not replace would hold slots the manifold then
+  // frees by its own choice: they go first. A corner replaces the point it
+  // lies within reach of, and keeps its warm start.
+  result->setPersistentManifold(manifold);
+  for (int j = manifold->getNumContacts() - 1; j >= 0; --j) {
+    const btManifoldPoint& cached = manifold->getContactPoint(j);
+    const Eigen::Vector3d middle =
+        0.5 * convertBtToEigen(cached.getPositionWorldOnA() + cached.getPositionWorldOnB());
+    bool kept = false;
+    for (const Corner& corner : corners)
+      kept |= (0.5 * (corner.on_lower + corner.on_upper) - middle).norm() < reach;
+    if (!kept) manifold->removeContactPoint(j);
+  }
+  for (const Corner& corner : corners) {
+    if (body1_lower)
+      result->addContactPoint(convertEigenToBt(normal), convertEigenToBt(corner.on_lower),
+                              corner.depth);
+    else
+      result->addContactPoint(convertEigenToBt(-normal), convertEigenToBt(corner.on_upper),
+                              corner.depth);
+  }
+  result->refreshContactPoints();
+  return true;
+}
+
+btCollisionAlgorithm* FlushBoxBoxAlgorithm::CreateFunc::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+    const btCollisionObjectWrapper* body1) {
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(FlushBoxBoxAlgorithm));
+  return new (memory) FlushBoxBoxAlgorithm(nullptr, info, body0, body1);
+}
+
+}  // namespace brick_stack_sim

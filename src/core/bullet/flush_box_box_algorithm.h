@@ -1,0 +1,44 @@
+#pragma once
+
+#include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
+#include <btBulletCollisionCommon.h>
+
+namespace brick_stack_sim {
+
+/// Bullet's box-box narrowphase, with faces that rest flush given the
+/// corners of their overlap.
+///
+/// Two boxes lying flat one on the other touch across the overlap of two
+/// faces, a polygon of up to eight corners (two planks crossing at an
+/// angle). Bullet's clipper keeps four of them, the deepest first, and on
+/// faces that rest flush which corner is deepest is rounding: from one
+/// step to the next the manifold drops a corner that bears the weight for
+/// one that bears nothing, its warm-started impulse with it, and a plank
+/// lying across another is kicked every few steps, never at rest for a
+/// whole rest window. Here, where the faces are parallel within
+/// kFlushAngle and touch, the manifold is given the overlap's corners
+/// (four of them, those that span the largest area, when there are more):
+/// chosen by geometry, the same every step while the boxes rest, so every
+/// point keeps its warm start. Everywhere else Bullet's detector runs.
+class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
+ public:
+  using btBoxBoxCollisionAlgorithm::btBoxBoxCollisionAlgorithm;
+
+  void processCollision(const btCollisionObjectWrapper* body0,
+                        const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
+                        btManifoldResult* result) override;
+
+  struct CreateFunc : public btCollisionAlgorithmCreateFunc {
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override;
+  };
+
+ private:
+  /// Puts the flush corners of the two boxes into `manifold`; false (and
+  /// nothing changed) where their faces do not rest flush.
+  bool addFlushCorners(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1,
+                       btPersistentManifold* manifold, btManifoldResult* result) const;
+};
+
+}  // namespace brick_stack_sim
