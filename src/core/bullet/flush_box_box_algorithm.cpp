@@ -69,29 +69,38 @@ std::vector<Eigen::Vector3d> widestFour(const std::vector<Eigen::Vector3d>& corn
 
 }  // namespace
 
+FlushBoxBoxAlgorithm::FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
+                                           const btCollisionObjectWrapper* body0,
+                                           const btCollisionObjectWrapper* body1)
+    : btBoxBoxCollisionAlgorithm(nullptr, info, body0, body1) {
+  btManifoldArray manifolds;
+  getAllContactManifolds(manifolds);
+  if (manifolds.size() == 1) manifold_ = manifolds[0];
+}
+
 void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
                                             const btCollisionObjectWrapper* body1,
                                             const btDispatcherInfo& info,
                                             btManifoldResult* result) {
-  btManifoldArray manifolds;
-  getAllContactManifolds(manifolds);
-  if (manifolds.size() == 1 && addFlushCorners(*body0, *body1, manifolds[0], result)) return;
+  if (manifold_ && addFlushCorners(*body0, *body1, result)) return;
   btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
 }
 
 bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0,
                                            const btCollisionObjectWrapper& body1,
-                                           btPersistentManifold* manifold,
                                            btManifoldResult* result) const {
   const OrientedBox box0 = orientedBox(body0), box1 = orientedBox(body1);
-  const double reach = manifold->getContactBreakingThreshold();
   std::vector<Eigen::Vector3d> patch;
   Eigen::Vector3d normal;  // the lower face's, towards the upper box
-  // Bullet's B is body1: its normal points from body1 towards body0.
+  // Bullet's B is body1: its normal points from body1 towards body0. Which
+  // box lies on the other is asked both ways: on a slope the upper one's
+  // centre may be the lower.
   const bool body1_lower = flushContactPatch(box1, box0, kFlushAngle, kFlushGap, &patch, &normal);
   if (!body1_lower && !flushContactPatch(box0, box1, kFlushAngle, kFlushGap, &patch, &normal))
     return false;
   const OrientedBox& upper = body1_lower ? box0 : box1;
+  btPersistentManifold* manifold = manifold_;
+  const double reach = manifold->getContactBreakingThreshold();
   struct Corner {
     Eigen::Vector3d on_lower, on_upper;
     double depth;  // < 0: penetrating
@@ -131,7 +140,7 @@ btCollisionAlgorithm* FlushBoxBoxAlgorithm::CreateFunc::CreateCollisionAlgorithm
     btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
     const btCollisionObjectWrapper* body1) {
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(FlushBoxBoxAlgorithm));
-  return new (memory) FlushBoxBoxAlgorithm(nullptr, info, body0, body1);
+  return new (memory) FlushBoxBoxAlgorithm(info, body0, body1);
 }
 
 }  // namespace brick_stack_sim

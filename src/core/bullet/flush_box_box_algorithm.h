@@ -22,7 +22,9 @@ namespace brick_stack_sim {
 /// point keeps its warm start. Everywhere else Bullet's detector runs.
 class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
  public:
-  using btBoxBoxCollisionAlgorithm::btBoxBoxCollisionAlgorithm;
+  FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
+                       const btCollisionObjectWrapper* body0,
+                       const btCollisionObjectWrapper* body1);
 
   void processCollision(const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
@@ -38,7 +40,11 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   /// Puts the flush corners of the two boxes into `manifold`; false (and
   /// nothing changed) where their faces do not rest flush.
   bool addFlushCorners(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1,
-                       btPersistentManifold* manifold, btManifoldResult* result) const;
+                       btManifoldResult* result) const;
+
+  /// The pair's manifold, which the base class owns (null when the pair
+  /// needs no collision).
+  btPersistentManifold* manifold_ = nullptr;
 };
 
 }  // namespace brick_stack_sim

@@ -64,19 +64,33 @@ double separation(const OrientedBox& a, const OrientedBox& b) {
 namespace {
 
 /// The face of `box` whose outward normal points most along `direction`:
-/// its unit normal and its four corners.
-void faceToward(const OrientedBox& box, const Eigen::Vector3d& direction, Eigen::Vector3d* normal,
-                std::array<Eigen::Vector3d, 4>* face) {
+/// its axis and its unit outward normal.
+int faceAxisToward(const OrientedBox& box, const Eigen::Vector3d& direction,
+                   Eigen::Vector3d* normal) {
   const Eigen::Matrix3d& r = box.pose.linear();
   int axis = 0;
   for (int i = 1; i < 3; ++i)
     if (std::abs(r.col(i).dot(direction)) > std::abs(r.col(axis).dot(direction))) axis = i;
-  const double sign = r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0;
-  *normal = sign * r.col(axis);
+  *normal = (r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0) * r.col(axis);
+  return axis;
+}
+
+/// The four corners of the face of `box` across `axis` with outward
+/// `normal`, in order.
+std::array<Eigen::Vector3d, 4> faceCorners(const OrientedBox& box, int axis,
+                                           const Eigen::Vector3d& normal) {
+  const Eigen::Matrix3d& r = box.pose.linear();
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const Eigen::Vector3d centre = box.pose.translation() + *normal * box.half_extents[axis];
+  const Eigen::Vector3d centre = box.pose.translation() + normal * box.half_extents[axis];
   const Eigen::Vector3d du = r.col(u) * box.half_extents[u], dv = r.col(v) * box.half_extents[v];
-  *face = {centre - du - dv, centre + du - dv, centre + du + dv, centre - du + dv};
+  return {centre - du - dv, centre + du - dv, centre + du + dv, centre - du + dv};
+}
+
+/// `face` seen from above.
+std::vector<Eigen::Vector2d> fromAbove(const std::array<Eigen::Vector3d, 4>& face) {
+  std::vector<Eigen::Vector2d> corners;
+  for (const Eigen::Vector3d& c : face) corners.push_back(c.head<2>());
+  return corners;
 }
 
 }  // namespace
@@ -84,22 +98,25 @@ void faceToward(const OrientedBox& box, const Eigen::Vector3d& direction, Eigen:
 bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, double max_angle,
                        double max_gap, std::vector<Eigen::Vector3d>* patch,
                        Eigen::Vector3d* normal) {
+  // The cheap tests first: the narrowphase asks this of every pair of
+  // boxes within reach, every step.
   Eigen::Vector3d lower_normal, upper_normal;
-  std::array<Eigen::Vector3d, 4> lower_face, upper_face;
-  faceToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal, &lower_face);
-  faceToward(upper, -Eigen::Vector3d::UnitZ(), &upper_normal, &upper_face);
-  if (lower_normal.dot(-upper_normal) < std::cos(max_angle)) return false;
+  const int lower_axis = faceAxisToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal);
+  const int upper_axis = faceAxisToward(upper, -Eigen::Vector3d::UnitZ(), &upper_normal);
   if (lower_normal.z() <= 0.0) return false;  // a face that looks down carries nothing
+  if (lower_normal.dot(-upper_normal) < std::cos(max_angle)) return false;
   // The faces must touch: a brick under a lintel or beside a neighbour has
   // parallel faces that overlap seen from above, on another plane.
+  const Eigen::Vector3d lower_centre =
+      lower.pose.translation() + lower_normal * lower.half_extents[lower_axis];
   const Eigen::Vector3d upper_centre =
-      0.25 * (upper_face[0] + upper_face[1] + upper_face[2] + upper_face[3]);
-  if (std::abs(lower_normal.dot(upper_centre - lower_face[0])) > max_gap) return false;
+      upper.pose.translation() + upper_normal * upper.half_extents[upper_axis];
+  if (std::abs(lower_normal.dot(upper_centre - lower_centre)) > max_gap) return false;
   if (lower_normal.dot(upper.pose.translation() - lower.pose.translation()) <= 0.0) return false;
-  std::vector<Eigen::Vector2d> lower_2d, upper_2d;
-  for (const Eigen::Vector3d& c : lower_face) lower_2d.push_back(c.head<2>());
-  for (const Eigen::Vector3d& c : upper_face) upper_2d.push_back(c.head<2>());
-  const Polygon2d overlap = intersectConvex(convexHull(upper_2d), convexHull(lower_2d));
+  const std::array<Eigen::Vector3d, 4> lower_face = faceCorners(lower, lower_axis, lower_normal);
+  const std::array<Eigen::Vector3d, 4> upper_face = faceCorners(upper, upper_axis, upper_normal);
+  const Polygon2d overlap =
+      intersectConvex(convexHull(fromAbove(upper_face)), convexHull(fromAbove(lower_face)));
   if (overlap.empty()) return false;
   // Lift each corner onto the plane of the lower face.
   const Eigen::Vector3d& origin = lower_face[0];

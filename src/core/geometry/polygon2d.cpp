@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace brick_stack_sim {
 
@@ -32,6 +33,7 @@ Polygon2d convexHull(std::vector<Eigen::Vector2d> points, double merge_distance)
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
   Polygon2d unique;
+  unique.reserve(points.size());
   for (const Eigen::Vector2d& p : points) {
     const bool duplicate = std::any_of(unique.begin(), unique.end(), [&](const Eigen::Vector2d& q) {
       return (p - q).norm() <= merge_distance;
@@ -96,12 +98,16 @@ bool contains(const Polygon2d& hull, const Eigen::Vector2d& point, double tolera
 
 Polygon2d intersectConvex(const Polygon2d& subject, const Polygon2d& clip) {
   if (subject.size() < 3 || clip.size() < 3) return {};
-  // Sutherland-Hodgman: clip by each edge's inner half-plane in turn.
-  Polygon2d output = subject;
+  // Sutherland-Hodgman: clip by each edge's inner half-plane in turn. Two
+  // buffers passed back and forth: the narrowphase clips every resting
+  // pair of faces every step.
+  Polygon2d output = subject, input;
+  output.reserve(subject.size() + clip.size());
+  input.reserve(subject.size() + clip.size());
   for (std::size_t i = 0; i < clip.size() && !output.empty(); ++i) {
     const Eigen::Vector2d& a = clip[i];
     const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
-    const Polygon2d input = output;
+    std::swap(input, output);
     output.clear();
     for (std::size_t j = 0; j < input.size(); ++j) {
       const Eigen::Vector2d& p = input[j];
