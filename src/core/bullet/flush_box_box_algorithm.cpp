@@ -1,5 +1,6 @@
 #include "bullet/flush_box_box_algorithm.h"
 
+#include <array>
 #include <cmath>
 #include <new>
 #include <vector>
@@ -33,11 +34,8 @@ OrientedBox orientedBox(const btCollisionObjectWrapper& body) {
 /// turned most towards `direction`; negative inside the box.
 double aboveFace(const OrientedBox& box, const Eigen::Vector3d& direction,
                  const Eigen::Vector3d& point) {
-  const Eigen::Matrix3d& r = box.pose.linear();
-  int axis = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(r.col(i).dot(direction)) > std::abs(r.col(axis).dot(direction))) axis = i;
-  const Eigen::Vector3d outward = (r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0) * r.col(axis);
+  Eigen::Vector3d outward;
+  const int axis = faceAxisToward(box, direction, &outward);
   return (point - box.pose.translation()).dot(outward) - box.half_extents[axis];
 }
 
@@ -55,16 +53,18 @@ std::vector<Eigen::Vector3d> widestFour(const std::vector<Eigen::Vector3d>& corn
     return std::abs((corners[c] - corners[a]).cross(corners[d] - corners[b]).dot(normal));
   };
   double widest = -1.0;
-  std::vector<Eigen::Vector3d> chosen;
+  std::array<int, 4> chosen{};
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b)
       for (int c = b + 1; c < n; ++c)
-        for (int d = c + 1; d < n; ++d)
-          if (area(a, b, c, d) > widest) {
-            widest = area(a, b, c, d);
-            chosen = {corners[a], corners[b], corners[c], corners[d]};
+        for (int d = c + 1; d < n; ++d) {
+          const double twice = area(a, b, c, d);
+          if (twice > widest) {
+            widest = twice;
+            chosen = {a, b, c, d};
           }
-  return chosen;
+        }
+  return {corners[chosen[0]], corners[chosen[1]], corners[chosen[2]], corners[chosen[3]]};
 }
 
 }  // namespace
@@ -99,8 +99,7 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
   if (!body1_lower && !flushContactPatch(box0, box1, kFlushAngle, kFlushGap, &patch, &normal))
     return false;
   const OrientedBox& upper = body1_lower ? box0 : box1;
-  btPersistentManifold* manifold = manifold_;
-  const double reach = manifold->getContactBreakingThreshold();
+  const double reach = manifold_->getContactBreakingThreshold();
   struct Corner {
     Eigen::Vector3d on_lower, on_upper;
     double depth;  // < 0: penetrating
@@ -114,15 +113,15 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
   // Points the corners will not replace would hold slots the manifold then
   // frees by its own choice: they go first. A corner replaces the point it
   // lies within reach of, and keeps its warm start.
-  result->setPersistentManifold(manifold);
-  for (int j = manifold->getNumContacts() - 1; j >= 0; --j) {
-    const btManifoldPoint& cached = manifold->getContactPoint(j);
+  result->setPersistentManifold(manifold_);
+  for (int j = manifold_->getNumContacts() - 1; j >= 0; --j) {
+    const btManifoldPoint& cached = manifold_->getContactPoint(j);
     const Eigen::Vector3d middle =
         0.5 * convertBtToEigen(cached.getPositionWorldOnA() + cached.getPositionWorldOnB());
     bool kept = false;
     for (const Corner& corner : corners)
       kept |= (0.5 * (corner.on_lower + corner.on_upper) - middle).norm() < reach;
-    if (!kept) manifold->removeContactPoint(j);
+    if (!kept) manifold_->removeContactPoint(j);
   }
   for (const Corner& corner : corners) {
     if (body1_lower)

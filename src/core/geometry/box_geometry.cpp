@@ -61,10 +61,6 @@ double separation(const OrientedBox& a, const OrientedBox& b) {
   return largest_gap;
 }
 
-namespace {
-
-/// The face of `box` whose outward normal points most along `direction`:
-/// its axis and its unit outward normal.
 int faceAxisToward(const OrientedBox& box, const Eigen::Vector3d& direction,
                    Eigen::Vector3d* normal) {
   const Eigen::Matrix3d& r = box.pose.linear();
@@ -74,6 +70,8 @@ int faceAxisToward(const OrientedBox& box, const Eigen::Vector3d& direction,
   *normal = (r.col(axis).dot(direction) >= 0.0 ? 1.0 : -1.0) * r.col(axis);
   return axis;
 }
+
+namespace {
 
 /// The four corners of the face of `box` across `axis` with outward
 /// `normal`, in order.

@@ -306,7 +306,8 @@ bool StackStabilityModel::standsWithMargin(const BodyMotion& body, const BrickSt
   // on what it would join, what statics says now may not hold a step on.
   BrickStability loaded = stability;
   loaded.external_loads = loads_.on(body.handle);
-  const SupportGraph what_if = joinedCopy(body, loaded, decision);
+  SupportGraph what_if = joinedCopy(body, loaded, decision);
+  unloadJoiners(&what_if, {body.handle});
   if (pressedByMovers(what_if)) return false;
   const StaticsSolution solution =
       assembleStatics(what_if, what_if.bricks(), options_, kRefreezeLoadFactor).solve();
@@ -317,7 +318,6 @@ SupportGraph StackStabilityModel::joinedCopy(const BodyMotion& body,
                                              const BrickStability& stability,
                                              const FreezeDecision& decision) const {
   SupportGraph what_if = graph_.componentsOf(supportersOf(stability));
-  unloadJoiners(&what_if, {body.handle});
   join(&what_if, body, decision.kind == BrickState::kLeaning, stability, options_);
   return what_if;
 }

@@ -22,6 +22,11 @@ Eigen::AlignedBox3d bounds(const OrientedBox& box);
 /// Half the length of the box's projection on the unit `axis` [m].
 double projectedRadius(const OrientedBox& box, const Eigen::Vector3d& axis);
 
+/// The axis (0, 1, 2) of the face of `box` whose outward normal points most
+/// along `direction`; `normal` receives that unit outward normal.
+int faceAxisToward(const OrientedBox& box, const Eigen::Vector3d& direction,
+                   Eigen::Vector3d* normal);
+
 /// The point of `box` (inside or on it) nearest `point` [m].
 Eigen::Vector3d nearestPointIn(const OrientedBox& box, const Eigen::Vector3d& point);
 
