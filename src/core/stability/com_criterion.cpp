@@ -173,6 +173,13 @@ bool ComCriterion::leans(const BrickStability& stability) const {
 
 bool ComCriterion::stands(const std::vector<BodyMotion>& bricks,
                           const std::vector<const BrickStability*>& stability) const {
+  const StaticsSolution solution = solveFree(bricks, stability);
+  return solution.solved && solution.feasible;
+}
+
+StaticsSolution ComCriterion::solveFree(const std::vector<BodyMotion>& bricks,
+                                        const std::vector<const BrickStability*>& stability,
+                                        StaticsBasis* basis) const {
   StaticsAssembly assembly(options_);
   for (const BodyMotion& brick : bricks) assembly.addFree(brick.handle, brick.mass, brick.com);
   for (std::size_t i = 0; i < bricks.size(); ++i) {
@@ -181,8 +188,7 @@ bool ComCriterion::stands(const std::vector<BodyMotion>& bricks,
     for (const PointForce& load : stability[i]->external_loads)
       assembly.addLoad(static_cast<int>(i), load);
   }
-  const StaticsSolution solution = assembly.solve();
-  return solution.solved && solution.feasible;
+  return assembly.solve(basis);
 }
 
 FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
@@ -224,10 +230,24 @@ bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stabili
 
 bool ComCriterion::admitsGroup(const std::vector<BodyMotion>& group,
                                const std::vector<BrickStability>& stability,
-                               std::vector<FreezeDecision>* decisions) const {
+                               std::vector<FreezeDecision>* decisions,
+                               std::vector<BodyHandle>* cannot_stay) const {
   std::vector<const BrickStability*> members;
   for (const BrickStability& s : stability) members.push_back(&s);
-  if (!stands(group, members)) return false;
+  const StaticsSolution solution = solveFree(group, members, &group_basis_);
+  if (!solution.solved) return false;
+  if (!solution.feasible) {
+    // The collapse mechanism the LP's dual names when it leaves some of the
+    // group out; when it moves them all, the bricks left unbalanced (the
+    // dual also moves bricks that could stand, wherever their rows bind).
+    if (cannot_stay) {
+      const std::size_t moving = std::count(solution.moves.begin(), solution.moves.end(), true);
+      for (std::size_t i = 0; i < group.size(); ++i)
+        if (moving < group.size() ? solution.moves[i] : solution.imbalance[i] > 0.0)
+          cannot_stay->push_back(group[i].handle);
+    }
+    return false;
+  }
   decisions->clear();
   for (std::size_t i = 0; i < group.size(); ++i) {
     decisions->push_back(admittedByStatics(group[i], stability[i]));

@@ -46,7 +46,8 @@ class ComCriterion : public StabilityCriterion {
   bool trustsComRulePasses() const override { return true; }
   bool admitsGroup(const std::vector<BodyMotion>& group,
                    const std::vector<BrickStability>& stability,
-                   std::vector<FreezeDecision>* decisions) const override;
+                   std::vector<FreezeDecision>* decisions,
+                   std::vector<BodyHandle>* cannot_stay = nullptr) const override;
 
  protected:
   /// A copy names the bodies of its own world.
@@ -82,6 +83,10 @@ class ComCriterion : public StabilityCriterion {
   /// is not one of them fixed, stand.
   bool stands(const std::vector<BodyMotion>& bricks,
               const std::vector<const BrickStability*>& stability) const;
+  /// The statics of stands(), from and into `basis` when given.
+  StaticsSolution solveFree(const std::vector<BodyMotion>& bricks,
+                            const std::vector<const BrickStability*>& stability,
+                            StaticsBasis* basis = nullptr) const;
   /// Whether the loads pressing on it from outside the stack leave it
   /// pressed onto its supports, sideways within friction.
   bool loadsHold(const BodyMotion& brick, const BrickStability& stability) const;
@@ -101,6 +106,9 @@ class ComCriterion : public StabilityCriterion {
   /// The last component LP's basis: a structure that grows brick by brick
   /// is re-solved from it (a warm start) rather than from scratch.
   mutable StaticsBasis basis_;
+  /// The last group LP's basis: a group asked again, or with the bricks
+  /// that cannot stay taken out, is mostly the same problem.
+  mutable StaticsBasis group_basis_;
 };
 
 }  // namespace brick_stack_sim

@@ -39,10 +39,13 @@ class StabilityCriterion {
   /// which `admits` alone (the planks of a V, a plank and its counterweight),
   /// may join the stack together, their supports among frozen bricks, the
   /// ground and each other as given; when they may, one decision per member,
-  /// in the group's order.
+  /// in the group's order. When they may not, `cannot_stay` (when given)
+  /// names the members that must move whatever the others do (a collapse
+  /// mechanism); empty when the criterion cannot tell.
   virtual bool admitsGroup(const std::vector<BodyMotion>& /*group*/,
                            const std::vector<BrickStability>& /*stability*/,
-                           std::vector<FreezeDecision>* /*decisions*/) const {
+                           std::vector<FreezeDecision>* /*decisions*/,
+                           std::vector<BodyHandle>* /*cannot_stay*/ = nullptr) const {
     return false;
   }
   /// Whether check() finds a component stable wherever the COM rule passes

@@ -172,7 +172,7 @@ void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions
   const ContactIndex index(&contacts);
   std::vector<BodyMotion> bodies;
   for (BodyHandle member : group) bodies.push_back(unjudged_.at(member).brick);
-  if (!admitTogether(bodies, index, false, decisions)) return;
+  if (!admitTogether(bodies, index, decisions)) return;
   for (BodyHandle member : group) {
     unjudged_.erase(member);
     touched_by_.erase(member);
@@ -180,8 +180,20 @@ void StackStabilityModel::admitGroupAtRest(BodyHandle newest, StabilityDecisions
 }
 
 bool StackStabilityModel::admitTogether(const std::vector<BodyMotion>& bodies,
-                                        const ContactIndex& index, bool measured_loads,
-                                        StabilityDecisions* decisions) {
+                                        const ContactIndex& index, StabilityDecisions* decisions) {
+  std::vector<BrickStability> stability;
+  if (!evaluateGroup(bodies, index, nullptr, &stability)) return false;
+  std::vector<FreezeDecision> admitted;
+  if (!criterion_->admitsGroup(bodies, stability, &admitted)) return false;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
+  return true;
+}
+
+bool StackStabilityModel::evaluateGroup(const std::vector<BodyMotion>& bodies,
+                                        const ContactIndex& index,
+                                        const ContactLoads::BodyTest* presses,
+                                        std::vector<BrickStability>* stability) const {
   std::vector<BodyHandle> group;
   for (const BodyMotion& body : bodies) group.push_back(body.handle);
   const auto member = [&](BodyHandle handle) {
@@ -190,13 +202,12 @@ bool StackStabilityModel::admitTogether(const std::vector<BodyMotion>& bodies,
   const SupporterTest frozen_or_member = [&](BodyHandle handle) {
     return graph_.canSupport(handle) || member(handle);
   };
-  std::vector<BrickStability> stability(bodies.size());
+  stability->assign(bodies.size(), BrickStability());
   bool held_from_outside = false;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    BrickStability& s = stability[i];
+    BrickStability& s = (*stability)[i];
     s.mass_above = bodies[i].mass;
-    if (measured_loads)
-      s.external_loads = loads_.on(group[i], [this](BodyHandle source) { return moves(source); });
+    if (presses) s.external_loads = loads_.on(group[i], *presses);
     s.supports =
         supportPatches(bodies[i], index.of(group[i]), frozen_or_member, options_, &s.side_contacts);
     criterion_->evaluate(bodies[i], &s);
@@ -205,31 +216,7 @@ bool StackStabilityModel::admitTogether(const std::vector<BodyMotion>& bodies,
   }
   // Bricks that touch nothing but each other cannot balance their weight:
   // no statics to ask (a tower placed in the air).
-  if (!held_from_outside) return false;
-  std::vector<FreezeDecision> admitted;
-  if (!criterion_->admitsGroup(bodies, stability, &admitted)) return false;
-  if (measured_loads && !standsJoined(bodies, stability, admitted)) return false;
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-    freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
-  return true;
-}
-
-bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
-                                       const std::vector<BrickStability>& stability,
-                                       const std::vector<FreezeDecision>& admitted) const {
-  std::vector<BodyHandle> supporters;
-  for (const BrickStability& s : stability)
-    for (BodyHandle supporter : supportersOf(s))
-      if (graph_.contains(supporter)) supporters.push_back(supporter);
-  SupportGraph what_if = graph_.componentsOf(supporters);
-  std::vector<BodyHandle> joiners;
-  for (const BodyMotion& body : bodies) joiners.push_back(body.handle);
-  std::sort(joiners.begin(), joiners.end());
-  unloadJoiners(&what_if, joiners);
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-    join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
-  if (pressedByMovers(what_if)) return false;
-  return criterion_->check(&what_if, what_if.bricks()).empty();
+  return held_from_outside;
 }
 
 PlacementEvaluation StackStabilityModel::evaluatePlacement(

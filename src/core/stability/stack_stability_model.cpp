@@ -257,38 +257,6 @@ double StackStabilityModel::untilSharedTick(double dt) const {
   return (static_cast<double>(tick - steps_) - 0.5) * dt;
 }
 
-void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
-                                             std::vector<const BodyMotion*>* resting,
-                                             StabilityDecisions* decisions) {
-  // The candidates: at rest and not admitted alone, those waiting where
-  // statics woke them too: what holds such a brick now may be a partner at
-  // rest, which it alone cannot count on, so alone it is refused for ever.
-  std::map<BodyHandle, std::size_t> candidate;
-  for (std::size_t i = 0; i < resting->size(); ++i) {
-    const BodyMotion* body = (*resting)[i];
-    if (!body) continue;
-    candidate[body->handle] = i;
-  }
-  std::set<BodyHandle> seen;
-  for (const auto& entry : candidate) {
-    const BodyHandle start = entry.first;
-    if (!seen.insert(start).second) continue;
-    std::vector<BodyHandle> group{start};
-    for (std::size_t next = 0; next < group.size(); ++next) {
-      for (const PairContact* contact : index.of(group[next])) {
-        const BodyHandle other = contact->a == group[next] ? contact->b : contact->a;
-        if (candidate.count(other) && seen.insert(other).second) group.push_back(other);
-      }
-    }
-    if (group.size() < 2) continue;
-    std::sort(group.begin(), group.end());
-    std::vector<BodyMotion> bodies;
-    for (BodyHandle member : group) bodies.push_back(*(*resting)[candidate.at(member)]);
-    if (!admitTogether(bodies, index, true, decisions)) continue;
-    for (BodyHandle member : group) (*resting)[candidate.at(member)] = nullptr;
-  }
-}
-
 void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision,
                                  BrickStability stability, StabilityDecisions* decisions) {
   join(&graph_, body, decision.kind == BrickState::kLeaning, std::move(stability), options_);

@@ -77,19 +77,37 @@ class StackStabilityModel : public StabilityModel {
   /// it (a pile's planks leaning on planks that are themselves at rest).
   void admitRestingGroups(const ContactIndex& index, std::vector<const BodyMotion*>* resting,
                           StabilityDecisions* decisions);
-  /// `bodies` (in handle order), at rest and touching each other as `index`
-  /// says, join the stack together when something frozen or the ground
-  /// holds them and the criterion admits them as a group; with
-  /// `measured_loads`, what moving bricks press on them counts. True when
-  /// they froze.
+  /// Of `bodies` (in handle order), at rest and touching each other as
+  /// `index` says, the part that stands joins the stack: the whole group
+  /// when the criterion admits it and the stack it joins still passes its
+  /// check; else the group without the members that must move whatever the
+  /// others do (the collapse mechanism), asked again, those left out
+  /// pressing on it with their measured loads. Returns the bricks that froze.
+  std::vector<BodyHandle> freezeWhatStands(std::vector<BodyMotion> bodies,
+                                           const ContactIndex& index,
+                                           StabilityDecisions* decisions);
+  /// `bodies` (in handle order), placed at rest together and touching each
+  /// other as `index` says, join the stack together when something frozen
+  /// or the ground holds them and the criterion admits them as a group.
+  /// True when they froze.
   bool admitTogether(const std::vector<BodyMotion>& bodies, const ContactIndex& index,
-                     bool measured_loads, StabilityDecisions* decisions);
+                     StabilityDecisions* decisions);
+  /// Each of `bodies` (in handle order) evaluated into `stability` on its
+  /// contacts in `index` with frozen bricks, the ground and each other,
+  /// loaded by what `presses` (when given) says presses on it. False when
+  /// nothing outside the group holds it: bricks that touch only each other
+  /// cannot balance their weight (a tower placed in the air).
+  bool evaluateGroup(const std::vector<BodyMotion>& bodies, const ContactIndex& index,
+                     const ContactLoads::BodyTest* presses,
+                     std::vector<BrickStability>* stability) const;
   /// Whether the stack, with `bodies` joined as `admitted` says, passes the
   /// check that wakes frozen bricks: a group that rests on frozen bricks
-  /// must not freeze only to wake them, and itself, at the next check.
+  /// must not freeze only to wake them, and itself, at the next check. The
+  /// members the check would wake are added to `cannot_stay`.
   bool standsJoined(const std::vector<BodyMotion>& bodies,
                     const std::vector<BrickStability>& stability,
-                    const std::vector<FreezeDecision>& admitted) const;
+                    const std::vector<FreezeDecision>& admitted,
+                    std::vector<BodyHandle>* cannot_stay) const;
   /// Evaluates `body` on its supports among `contacts` into `stability`;
   /// true (and `decision`) when the criterion admits it.
   bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,

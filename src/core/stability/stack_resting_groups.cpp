@@ -1,0 +1,132 @@
+// StackStabilityModel's groups of movers at rest: bricks of a pile that
+// lean on each other and only stand together. Of such a group the part
+// statics holds freezes; the members that cannot stay are left to Bullet
+// and asked again later.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "stability/contact_classifier.h"
+#include "stability/stack_stability_model.h"
+#include "stability/statics_assembly.h"
+#include "stability/support_evaluation.h"
+
+namespace brick_stack_sim {
+
+namespace {
+
+/// How many times a group refused is asked again at once without the
+/// bricks that cannot stay. Each round is an LP of the whole group; what
+/// is still refused after them is asked at the next tick, when the rest
+/// may have settled.
+constexpr int kWithoutMechanismRounds = 4;
+
+}  // namespace
+
+void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
+                                             std::vector<const BodyMotion*>* resting,
+                                             StabilityDecisions* decisions) {
+  // The candidates: at rest and not admitted alone, those waiting where
+  // statics woke them too: what holds such a brick now may be a partner at
+  // rest, which it alone cannot count on, so alone it is refused for ever.
+  std::map<BodyHandle, std::size_t> candidate;
+  for (std::size_t i = 0; i < resting->size(); ++i) {
+    const BodyMotion* body = (*resting)[i];
+    if (!body) continue;
+    candidate[body->handle] = i;
+  }
+  std::set<BodyHandle> seen;
+  for (const auto& entry : candidate) {
+    const BodyHandle start = entry.first;
+    if (!seen.insert(start).second) continue;
+    std::vector<BodyHandle> group{start};
+    for (std::size_t next = 0; next < group.size(); ++next) {
+      for (const PairContact* contact : index.of(group[next])) {
+        const BodyHandle other = contact->a == group[next] ? contact->b : contact->a;
+        if (candidate.count(other) && seen.insert(other).second) group.push_back(other);
+      }
+    }
+    if (group.size() < 2) continue;
+    std::sort(group.begin(), group.end());
+    std::vector<BodyMotion> bodies;
+    for (BodyHandle member : group) bodies.push_back(*(*resting)[candidate.at(member)]);
+    for (BodyHandle frozen : freezeWhatStands(std::move(bodies), index, decisions))
+      (*resting)[candidate.at(frozen)] = nullptr;
+  }
+}
+
+std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMotion> bodies,
+                                                              const ContactIndex& index,
+                                                              StabilityDecisions* decisions) {
+  // What is not of the group presses on it with its measured load: movers,
+  // bricks left out, and bricks at rest that are not due yet. (In a pile
+  // that settles a third of the bricks a group touches are; without their
+  // loads the group's planks lean on nothing there, and it never stands.)
+  std::vector<BodyHandle> members;
+  for (const BodyMotion& body : bodies) members.push_back(body.handle);
+  const ContactLoads::BodyTest presses = [&](BodyHandle source) {
+    return !std::binary_search(members.begin(), members.end(), source);
+  };
+  for (int round = 0; round <= kWithoutMechanismRounds && bodies.size() >= 2; ++round) {
+    std::vector<BrickStability> stability;
+    if (!evaluateGroup(bodies, index, &presses, &stability)) break;
+    std::vector<FreezeDecision> admitted;
+    std::vector<BodyHandle> cannot_stay;
+    if (criterion_->admitsGroup(bodies, stability, &admitted, &cannot_stay) &&
+        standsJoined(bodies, stability, admitted, &cannot_stay)) {
+      std::vector<BodyHandle> frozen;
+      for (std::size_t i = 0; i < bodies.size(); ++i) {
+        frozen.push_back(bodies[i].handle);
+        freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
+      }
+      return frozen;
+    }
+    // Without what must move the rest may stand; if all of it must move,
+    // or the criterion cannot say what, the group waits as a whole.
+    std::sort(cannot_stay.begin(), cannot_stay.end());
+    const auto must_move = [&](const BodyMotion& body) {
+      return std::binary_search(cannot_stay.begin(), cannot_stay.end(), body.handle);
+    };
+    const std::size_t before = bodies.size();
+    bodies.erase(std::remove_if(bodies.begin(), bodies.end(), must_move), bodies.end());
+    if (bodies.size() == before || bodies.empty()) break;
+    members.clear();
+    for (const BodyMotion& body : bodies) members.push_back(body.handle);
+  }
+  return {};
+}
+
+bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
+                                       const std::vector<BrickStability>& stability,
+                                       const std::vector<FreezeDecision>& admitted,
+                                       std::vector<BodyHandle>* cannot_stay) const {
+  std::vector<BodyHandle> supporters;
+  for (const BrickStability& s : stability)
+    for (BodyHandle supporter : supportersOf(s))
+      if (graph_.contains(supporter)) supporters.push_back(supporter);
+  SupportGraph what_if = graph_.componentsOf(supporters);
+  std::vector<BodyHandle> joiners;
+  for (const BodyMotion& body : bodies) joiners.push_back(body.handle);
+  std::sort(joiners.begin(), joiners.end());
+  unloadJoiners(&what_if, joiners);
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
+  // A joiner a moving brick presses on may not stand a step on (a collapse
+  // that has not ended): it waits, and the rest may join without it. What
+  // movers press on frozen bricks is in their statics, judged again as it
+  // changes.
+  const std::size_t known = cannot_stay->size();
+  for (BodyHandle joiner : joiners)
+    if (!loads_.on(joiner, [this](BodyHandle source) { return moves(source); }).empty())
+      cannot_stay->push_back(joiner);
+  if (cannot_stay->size() > known) return false;
+  const std::vector<WakeDecision> woken = criterion_->check(&what_if, what_if.bricks());
+  // Joiners the check would wake cannot stay; a frozen brick it would wake
+  // is one the whole group must not load.
+  for (const WakeDecision& decision : woken)
+    if (std::binary_search(joiners.begin(), joiners.end(), decision.brick))
+      cannot_stay->push_back(decision.brick);
+  return woken.empty();
+}
+
+}  // namespace brick_stack_sim
