@@ -237,15 +237,12 @@ bool ComCriterion::admitsGroup(const std::vector<BodyMotion>& group,
   const StaticsSolution solution = solveFree(group, members, &group_basis_);
   if (!solution.solved) return false;
   if (!solution.feasible) {
-    // The collapse mechanism the LP's dual names when it leaves some of the
-    // group out; when it moves them all, the bricks left unbalanced (the
-    // dual also moves bricks that could stand, wherever their rows bind).
-    if (cannot_stay) {
-      const std::size_t moving = std::count(solution.moves.begin(), solution.moves.end(), true);
+    // The collapse mechanism the LP's dual names. (Taking out only the
+    // bricks left unbalanced where it moves them all freed nothing more on
+    // a pile, and cost an LP of the whole group per round.)
+    if (cannot_stay)
       for (std::size_t i = 0; i < group.size(); ++i)
-        if (moving < group.size() ? solution.moves[i] : solution.imbalance[i] > 0.0)
-          cannot_stay->push_back(group[i].handle);
-    }
+        if (solution.moves[i]) cannot_stay->push_back(group[i].handle);
     return false;
   }
   decisions->clear();

@@ -58,14 +58,14 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
 std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMotion> bodies,
                                                               const ContactIndex& index,
                                                               StabilityDecisions* decisions) {
-  // What is not of the group presses on it with its measured load: movers,
-  // bricks left out, and bricks at rest that are not due yet. (In a pile
-  // that settles a third of the bricks a group touches are; without their
-  // loads the group's planks lean on nothing there, and it never stands.)
-  std::vector<BodyHandle> members;
-  for (const BodyMotion& body : bodies) members.push_back(body.handle);
+  // The rest must stand without the bricks left out, which may fall away,
+  // and bear their weight where they stay: each presses on the members it
+  // touches with its measured load. A brick at rest that is not due yet
+  // is not counted on, as a brick at rest is not when one under it is
+  // judged: bricks are judged from the bottom up.
+  std::vector<BodyHandle> left_out;
   const ContactLoads::BodyTest presses = [&](BodyHandle source) {
-    return !std::binary_search(members.begin(), members.end(), source);
+    return moves(source) || std::binary_search(left_out.begin(), left_out.end(), source);
   };
   for (int round = 0; round <= kWithoutMechanismRounds && bodies.size() >= 2; ++round) {
     std::vector<BrickStability> stability;
@@ -76,8 +76,10 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMo
         standsJoined(bodies, stability, admitted, &cannot_stay)) {
       std::vector<BodyHandle> frozen;
       for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const bool in_place = wokenInPlace(bodies[i]);
         frozen.push_back(bodies[i].handle);
         freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
+        if (in_place) graph_.find(bodies[i].handle)->refrozen_in_place = true;
       }
       return frozen;
     }
@@ -90,8 +92,8 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMo
     const std::size_t before = bodies.size();
     bodies.erase(std::remove_if(bodies.begin(), bodies.end(), must_move), bodies.end());
     if (bodies.size() == before || bodies.empty()) break;
-    members.clear();
-    for (const BodyMotion& body : bodies) members.push_back(body.handle);
+    left_out.insert(left_out.end(), cannot_stay.begin(), cannot_stay.end());
+    std::sort(left_out.begin(), left_out.end());
   }
   return {};
 }
@@ -111,15 +113,9 @@ bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,
   unloadJoiners(&what_if, joiners);
   for (std::size_t i = 0; i < bodies.size(); ++i)
     join(&what_if, bodies[i], admitted[i].kind == BrickState::kLeaning, stability[i], options_);
-  // A joiner a moving brick presses on may not stand a step on (a collapse
-  // that has not ended): it waits, and the rest may join without it. What
-  // movers press on frozen bricks is in their statics, judged again as it
-  // changes.
-  const std::size_t known = cannot_stay->size();
-  for (BodyHandle joiner : joiners)
-    if (!loads_.on(joiner, [this](BodyHandle source) { return moves(source); }).empty())
-      cannot_stay->push_back(joiner);
-  if (cannot_stay->size() > known) return false;
+  // While a brick that moves presses on the stack it would join, what
+  // statics says now may not hold a step on (a collapse that has not ended).
+  if (pressedByMovers(what_if)) return false;
   const std::vector<WakeDecision> woken = criterion_->check(&what_if, what_if.bricks());
   // Joiners the check would wake cannot stay; a frozen brick it would wake
   // is one the whole group must not load.

@@ -121,6 +121,11 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
   if (!input.more_to_come) settle(&graph_, &rest_, decisions);
 }
 
+bool StackStabilityModel::wokenInPlace(const BodyMotion& body) const {
+  const RestTracker::Mover* mover = rest_.find(body.handle);
+  return mover && mover->woken && (body.com - mover->woken_at).norm() < kMovedAway;
+}
+
 bool StackStabilityModel::moves(BodyHandle body) const {
   return !std::binary_search(resting_.begin(), resting_.end(), body);
 }
@@ -218,7 +223,7 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
       BrickStability& stability = mover.stability;
       FreezeDecision decision;
       if (!evaluateMover(*body, index.of(body->handle), &stability, &decision)) continue;
-      const bool in_place = mover.woken && (body->com - mover.woken_at).norm() < kMovedAway;
+      const bool in_place = wokenInPlace(*body);
       if (in_place && !standsWithMargin(*body, stability, decision)) {
         // Where statics woke it, it waits for what changed to show: another
         // rest window, then statics is asked again.

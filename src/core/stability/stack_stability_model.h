@@ -141,6 +141,8 @@ class StackStabilityModel : public StabilityModel {
   /// How long [s] a refused mover waits, on a step of `dt` [s], until the
   /// next tick at which every refused mover is asked again.
   double untilSharedTick(double dt) const;
+  /// Whether the model woke `body` and it has not moved away since.
+  bool wokenInPlace(const BodyMotion& body) const;
   /// Whether `body`, a source of measured loads, is not among resting_.
   bool moves(BodyHandle body) const;
   /// Whether a brick that moves presses on a brick of `what_if`: then what

@@ -256,39 +256,39 @@ TEST_P(ModelConformance, APlacementWithNothingFrozenUnderItIsNotStable) {
 TEST_P(ModelConformance, OfAGroupAtRestThePartStaticsHoldsFreezesWithoutWhatMustFall) {
   // A V of planks b0 and b1 at half the angle statics holds on mu = 0.5
   // (tan(theta) <= 2 mu + T/L, vThresholdAngle), their upper inner edges
-  // meeting at x = 0, and a plank b2 lying on b1's outer upper edge and
-  // nothing else, its centre 50 mm beyond that edge: no force on one line
-  // balances its weight's moment. All three are at rest and touch, so
-  // they are judged as one group. The V stands without b2 and freezes;
-  // b2 cannot, and stays with the engine. Refused as a whole, the V never
-  // froze while b2 lay there.
+  // meeting at x = 0, and a plank b2 that touches only b1's side face
+  // (normal +y), as a plank caught against it for an instant does: nothing
+  // presses it onto that face, so friction there holds none of its weight.
+  // All three are at rest and touch, so they are judged as one group. The
+  // V stands without b2 and freezes; b2 cannot, and stays with the engine.
+  // Refused as a whole, the V never froze while b2 touched it.
   if (!model_->judgesLeaning()) GTEST_SKIP() << "judges no leaning groups";
   const double mu = 0.5, theta = 0.5 * test::vThresholdAngle(mu);
   const double l = kKaplaLength, t = kKaplaThickness, w = kKaplaWidth / 2;
-  const double top = l * std::cos(theta) + t * std::sin(theta), outer = t * std::cos(theta);
-  const auto line = [&](BodyHandle a, BodyHandle b, double x, double z,
+  const auto line = [&](BodyHandle a, BodyHandle b, std::vector<Eigen::Vector3d> points,
                         const Eigen::Vector3d& normal) {
     PairContact contact;
     contact.a = a;
     contact.b = b;
     contact.normal = normal;
-    contact.points = {{x, -w, z}, {x, w, z}};
+    contact.points = std::move(points);
     contact.friction = mu;
     return contact;
   };
-  const std::vector<PairContact> contacts = {
-      line(0, kTableHandle, -l * std::sin(theta), 0.0, Eigen::Vector3d::UnitZ()),
-      line(1, kTableHandle, l * std::sin(theta), 0.0, Eigen::Vector3d::UnitZ()),
-      line(0, 1, 0.0, l * std::cos(theta), -Eigen::Vector3d::UnitX()),
-      line(2, 1, outer, top, Eigen::Vector3d::UnitZ())};
+  const double foot = l * std::sin(theta), apex = l * std::cos(theta);
   const double centre_x = 0.5 * (t * std::cos(theta) + l * std::sin(theta));
   const double centre_z = 0.5 * (t * std::sin(theta) + l * std::cos(theta));
+  const std::vector<PairContact> contacts = {
+      line(0, kTableHandle, {{-foot, -w, 0.0}, {-foot, w, 0.0}}, Eigen::Vector3d::UnitZ()),
+      line(1, kTableHandle, {{foot, -w, 0.0}, {foot, w, 0.0}}, Eigen::Vector3d::UnitZ()),
+      line(0, 1, {{0.0, -w, apex}, {0.0, w, apex}}, -Eigen::Vector3d::UnitX()),
+      line(2, 1, {{centre_x, w, 0.4 * apex}, {centre_x, w, 0.6 * apex}}, Eigen::Vector3d::UnitY())};
   const std::vector<BodyMotion> movers = {
       BodyMotion{0, Eigen::Vector3d(-centre_x, 0.0, centre_z), kKaplaMass, Eigen::Vector3d::Zero(),
                  Eigen::Vector3d::Zero()},
       BodyMotion{1, Eigen::Vector3d(centre_x, 0.0, centre_z), kKaplaMass, Eigen::Vector3d::Zero(),
                  Eigen::Vector3d::Zero()},
-      kapla(2, outer + 0.05, 0.0, top)};
+      kapla(2, centre_x + 0.04, 2.0 * w, 0.5 * apex)};
   stepFor(4.0 * options_.rest_time, movers, contacts);
   EXPECT_TRUE(frozen(0));
   EXPECT_TRUE(frozen(1));
