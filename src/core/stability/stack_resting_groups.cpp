@@ -8,7 +8,6 @@
 
 #include "stability/contact_classifier.h"
 #include "stability/stack_stability_model.h"
-#include "stability/statics_assembly.h"
 #include "stability/support_evaluation.h"
 
 namespace brick_stack_sim {
@@ -76,10 +75,8 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMo
         standsJoined(bodies, stability, admitted, &cannot_stay)) {
       std::vector<BodyHandle> frozen;
       for (std::size_t i = 0; i < bodies.size(); ++i) {
-        const bool in_place = wokenInPlace(bodies[i]);
         frozen.push_back(bodies[i].handle);
         freeze(bodies[i], std::move(admitted[i]), std::move(stability[i]), decisions);
-        if (in_place) graph_.find(bodies[i].handle)->refrozen_in_place = true;
       }
       return frozen;
     }

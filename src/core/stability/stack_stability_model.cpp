@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <sstream>
 
 #include "stability/contact_classifier.h"
@@ -231,7 +230,6 @@ void StackStabilityModel::advanceMovers(const StabilityInput& input,
         continue;
       }
       freeze(*body, std::move(decision), stability, decisions);
-      if (in_place) graph_.find(body->handle)->refrozen_in_place = true;
       body = nullptr;
       froze = true;
     }
@@ -264,7 +262,10 @@ double StackStabilityModel::untilSharedTick(double dt) const {
 
 void StackStabilityModel::freeze(const BodyMotion& body, FreezeDecision decision,
                                  BrickStability stability, StabilityDecisions* decisions) {
+  const bool in_place = wokenInPlace(body);
   join(&graph_, body, decision.kind == BrickState::kLeaning, std::move(stability), options_);
+  // Woken again, it is a wake/refreeze cycle.
+  graph_.find(body.handle)->refrozen_in_place = in_place;
   rest_.erase(body.handle);
   // Its weight now passes through the stack, not through the engine.
   loads_.forgetSource(body.handle);
