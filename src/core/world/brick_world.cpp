@@ -44,6 +44,8 @@ constexpr double kColliderMargin = 1e-3;
 /// Frozen bricks that movers may reach within this step come into Bullet's
 /// world, and the model judges the blows before Bullet resolves them.
 void prepareFrozenColliders(WorldState* w) {
+  // Nothing frozen, nothing to bring: a pile in the air pays nothing here.
+  if (w->dormant.size() == 0) return;
   // How far a mover can get within this step. Its own speed is not enough:
   // gravity adds g dt during the step, and a collision inside the step can
   // hand it up to twice the speed of the fastest brick that may hit it. CCD
