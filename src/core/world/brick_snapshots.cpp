@@ -2,6 +2,8 @@
 // revision, and the support geometry the model describes.
 #include "brick_stack_sim/core/world/brick_world.h"
 
+#include <algorithm>
+
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_model.h"
 #include "world/world_state.h"
@@ -62,13 +64,34 @@ std::vector<BrickSnapshot> BrickWorld::snapshotChangedSince(std::uint64_t revisi
                                                             std::vector<unsigned>* serials) const {
   const WorldState& w = *state_;
   std::vector<BrickSnapshot> changed;
+  // A mover may have moved in any step; a frozen brick has not, unless it
+  // was frozen, or described anew, since.
+  const bool anything = w.revision > revision;
+  if (!serials && revision >= w.stamps_from) {
+    // The movers and the stamped bricks, without a walk over every brick.
+    std::vector<const BrickRecord*> candidates;
+    if (anything) {
+      candidates.assign(w.sets.movers().begin(), w.sets.movers().end());
+      candidates.insert(candidates.end(), w.sets.held().begin(), w.sets.held().end());
+    }
+    for (auto stamp = w.firstStampAfter(revision); stamp != w.stamps.end(); ++stamp) {
+      const BrickRecord* brick = w.bricks.find(stamp->second);
+      if (brick && isFrozen(brick->mode)) candidates.push_back(brick);
+    }
+    // Handles are placement serials: their order is placement order.
+    const auto by_serial = [](const BrickRecord* a, const BrickRecord* b) {
+      return a->handle < b->handle;
+    };
+    std::sort(candidates.begin(), candidates.end(), by_serial);
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    changed.reserve(candidates.size());
+    for (const BrickRecord* brick : candidates) changed.push_back(snapshotOf(w, *brick));
+    return changed;
+  }
   if (serials) {
     serials->clear();
     serials->reserve(w.bricks.size());
   }
-  // A mover may have moved in any step; a frozen brick has not, unless it
-  // was frozen, or described anew, since.
-  const bool anything = w.revision > revision;
   for (const auto& brick : w.bricks.all()) {
     if (serials) serials->push_back(brick->handle);
     if (isFrozen(brick->mode) ? brick->changed_at > revision : anything)

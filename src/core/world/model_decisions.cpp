@@ -9,7 +9,7 @@ void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
   // the stack changes the load on every frozen brick under it).
   if (w->model) {
     for (BodyHandle handle : w->model->takeRedescribed())
-      if (BrickRecord* brick = w->bricks.find(handle)) brick->changed_at = w->revision;
+      if (BrickRecord* brick = w->bricks.find(handle)) w->stampChanged(brick);
   }
   if (decisions.empty()) return;
   // Contacts read before bodies changed hands would name bricks that moved
@@ -20,14 +20,14 @@ void applyDecisions(WorldState* w, const StabilityDecisions& decisions) {
     BrickRecord* brick = w->bricks.find(d.brick);
     if (!brick) continue;
     w->sets.transfer(brick, frozenMode(d.kind));
-    brick->changed_at = w->revision;
+    w->stampChanged(brick);
     w->emit(SimEventKind::kFrozen, brick->id, d.reason);
   }
   for (const WakeDecision& d : decisions.wake) {
     BrickRecord* brick = w->bricks.find(d.brick);
     if (!brick) continue;
     w->sets.transfer(brick, BrickMode::kDynamic);
-    brick->changed_at = w->revision;
+    w->stampChanged(brick);
     if (d.repeats) ++w->cost.wake_cycles;
     w->emit(SimEventKind::kWoken, brick->id, d.reason);
   }

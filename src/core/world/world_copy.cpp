@@ -39,6 +39,8 @@ std::unique_ptr<BrickWorld> BrickWorld::copy() const {
   to->placed_at_rest = from.placed_at_rest;
   to->next_serial = from.next_serial;
   to->revision = from.revision;
+  to->stamps = from.stamps;
+  to->stamps_from = from.stamps_from;
   to->cost = from.cost;
   return std::unique_ptr<BrickWorld>(new BrickWorld(std::move(state)));
 }

@@ -11,6 +11,22 @@ void WorldState::recordChange(Change change) {
   if (change == Change::kBodies) contacts.clear();
 }
 
+std::vector<std::pair<std::uint64_t, BodyHandle>>::const_iterator WorldState::firstStampAfter(
+    std::uint64_t after) const {
+  return std::upper_bound(stamps.begin(), stamps.end(), after,
+                          [](std::uint64_t at, const auto& stamp) { return at < stamp.first; });
+}
+
+void WorldState::stampChanged(BrickRecord* brick) {
+  brick->changed_at = revision;
+  stamps.emplace_back(revision, brick->handle);
+  // Beyond twice the bricks, the older half goes, cut between revisions: a
+  // reader that saw a revision before the cut walks every brick instead.
+  if (stamps.size() <= 2 * bricks.size() + 64) return;
+  stamps_from = stamps[stamps.size() / 2].first;
+  stamps.erase(stamps.cbegin(), firstStampAfter(stamps_from));
+}
+
 BrickRecord* BrickRegistry::add(std::unique_ptr<BrickRecord> brick) {
   BrickRecord* record = brick.get();
   by_id_[record->id] = record;

@@ -75,6 +75,16 @@ struct WorldState {
   /// Grows at every step that moves or judges something and at every request
   /// that changes something (BrickWorld::revision).
   std::uint64_t revision = 0;
+  /// Every stamp of a brick's changed_at after revision `stamps_from`, in
+  /// revision order: a reader of snapshotChangedSince() finds the frozen
+  /// bricks that changed here without walking every brick (whose records
+  /// lie far apart in memory: 2000 frozen bricks cost a runner that looks
+  /// every 10 ms more than ten moving ones).
+  std::vector<std::pair<std::uint64_t, BodyHandle>> stamps;
+  std::uint64_t stamps_from = 0;
+  /// The first of `stamps` made after revision `revision`.
+  std::vector<std::pair<std::uint64_t, BodyHandle>>::const_iterator firstStampAfter(
+      std::uint64_t revision) const;
   CostCounters cost;
   /// Bricks the guard found outside the world box this step, with why; the
   /// world removes them (as lost) once the guard is done with its loop.
@@ -93,6 +103,9 @@ struct WorldState {
   /// changes anything, so that a refused request leaves the world as it was,
   /// its revision included.
   void recordChange(Change change);
+  /// `brick` changed in this revision (BrickRecord::changed_at), and the
+  /// stamp is logged; the log keeps about as many stamps as bricks.
+  void stampChanged(BrickRecord* brick);
 
   double time() const { return start_time + static_cast<double>(cost.steps) * options.time_step; }
   void emit(SimEventKind kind, const std::string& id, std::string reason,

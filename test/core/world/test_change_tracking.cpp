@@ -94,6 +94,13 @@ class ChangeTracking : public testing::TestWithParam<std::string> {
       EXPECT_TRUE(sameSnapshot(brick, found->second.snapshot))
           << after << ": the report's snapshot of " << brick.id << " is not snapshot()'s";
     }
+    // Asked without serials, the world finds the changes from its log of
+    // them instead of walking every brick; it must find the same ones.
+    std::vector<unsigned> quick;
+    for (const BrickSnapshot& brick : world_->snapshotChangedSince(seen_revision_))
+      quick.push_back(brick.serial);
+    EXPECT_EQ(quick, std::vector<unsigned>(reported.begin(), reported.end()))
+        << after << ": asked without serials, the world reports other bricks";
     std::vector<unsigned> expected_serials;
     for (const auto& [serial, shown] : now) expected_serials.push_back(serial);
     EXPECT_EQ(serials, expected_serials) << after;
@@ -228,6 +235,9 @@ TEST_P(ChangeTracking, EveryChangeIsReportedAndASettledWorldReportsNothing) {
   stepAndLook(1.0, "after the release");
 
   EXPECT_GT(differences_, 1000) << "the scene changed too little to prove anything";
+  // A reader that last looked before anything was placed, long ago, is
+  // told of every brick.
+  EXPECT_EQ(world_->snapshotChangedSince(0).size(), world_->brickCount());
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ChangeTracking, testing::ValuesIn(test::allModes()),

@@ -157,7 +157,9 @@ class BrickWorld {
   /// frozen bricks that froze or that the model described anew since. A
   /// frozen brick nothing has touched costs no stability query. `serials`
   /// (optional) receives every brick's serial in placement order, so that a
-  /// caller can tell which bricks were removed. A world that replaces
+  /// caller can tell which bricks were removed; that walks every brick.
+  /// Without it, and for a `revision` not long past, the cost follows the
+  /// bricks reported, not the bricks in the world. A world that replaces
   /// another (a reset) counts from 0 again.
   std::vector<BrickSnapshot> snapshotChangedSince(std::uint64_t revision,
                                                   std::vector<unsigned>* serials = nullptr) const;
