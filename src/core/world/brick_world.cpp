@@ -51,11 +51,8 @@ void prepareFrozenColliders(WorldState* w) {
   // hand it up to twice the speed of the fastest brick that may hit it. CCD
   // does not help against a body that is not in Bullet's world.
   double fastest = 0.0;
-  for (const BrickRecord* mover : w->sets.movers()) {
-    fastest = std::max(
-        fastest, w->scene.linearSpeed(mover->handle) +
-                     w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass());
-  }
+  for (const BrickRecord* mover : w->sets.movers())
+    fastest = std::max(fastest, w->fastestPointSpeed(*mover));
   const double dt = w->options.time_step;
   const double travel = (2.0 * fastest + w->options.gravity * dt) * dt + kColliderMargin;
   std::vector<MoverReach> reaches;

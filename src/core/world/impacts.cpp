@@ -219,9 +219,7 @@ void strikeFrozenBricks(WorldState* w, const std::vector<ColliderApproach>& near
       continue;
     // A brick slower than the impact speed everywhere cannot strike: most
     // movers near frozen bricks are settling on them.
-    const double fastest =
-        w->scene.linearSpeed(mover->handle) +
-        w->scene.angularSpeed(mover->handle) * mover->type.reachFromCentreOfMass();
+    const double fastest = w->fastestPointSpeed(*mover);
     if (fastest <= w->options.stability.impact_speed) continue;
     const double dt = w->options.time_step;
     Striker striker{mover->handle,

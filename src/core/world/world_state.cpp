@@ -118,4 +118,9 @@ BodyMotion WorldState::motionOf(const BrickRecord& brick) const {
                     scene.linearVelocity(brick.handle), scene.angularVelocity(brick.handle)};
 }
 
+double WorldState::fastestPointSpeed(const BrickRecord& brick) const {
+  return scene.linearSpeed(brick.handle) +
+         scene.angularSpeed(brick.handle) * brick.type.reachFromCentreOfMass();
+}
+
 }  // namespace brick_stack_sim

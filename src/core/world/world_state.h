@@ -120,6 +120,9 @@ struct WorldState {
   double frictionOf(BodyHandle handle) const;
   /// What the model is told of a brick now.
   BodyMotion motionOf(const BrickRecord& brick) const;
+  /// The speed of a brick's fastest point, at most: its centre of mass's
+  /// speed plus its spin times its reach from there [m/s].
+  double fastestPointSpeed(const BrickRecord& brick) const;
 };
 
 /// The decision path: every call of the model goes through decide(), and
