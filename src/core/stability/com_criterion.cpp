@@ -188,7 +188,7 @@ StaticsSolution ComCriterion::solveFree(const std::vector<BodyMotion>& bricks,
     for (const PointForce& load : stability[i]->external_loads)
       assembly.addLoad(static_cast<int>(i), load);
   }
-  return assembly.solve(basis);
+  return basis ? assembly.solve(basis) : memo_.solve(assembly);
 }
 
 FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
@@ -324,7 +324,7 @@ void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHan
     assembly.addPatches(static_cast<int>(i), node.supports);
     if (node.leaning) assembly.addPatches(static_cast<int>(i), node.side_contacts);
   }
-  const StaticsSolution solution = assembly.solve();
+  const StaticsSolution solution = memo_.solve(assembly);
   if (!solution.solved) {
     // Never keep a leaning brick frozen on no answer: Bullet will tell.
     for (BodyHandle handle : group)

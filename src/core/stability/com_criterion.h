@@ -5,6 +5,7 @@
 
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_criterion.h"
+#include "stability/statics_memo.h"
 #include "stability/support_graph.h"
 
 namespace brick_stack_sim {
@@ -109,6 +110,9 @@ class ComCriterion : public StabilityCriterion {
   /// The last group LP's basis: a group asked again, or with the bricks
   /// that cannot stay taken out, is mostly the same problem.
   mutable StaticsBasis group_basis_;
+  /// A pile's component is judged again each time a brick joins it, and
+  /// its leaning groups far from the newcomer pose the same LPs again.
+  mutable StaticsMemo memo_;
 };
 
 }  // namespace brick_stack_sim
