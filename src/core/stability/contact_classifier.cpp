@@ -73,10 +73,11 @@ SupporterTest frozenOrGround(const SupportGraph& graph) {
 }
 
 void refineFlushPatches(const std::function<PlacedSolid(BodyHandle)>& solid_of,
-                        const StabilityOptions& options, std::vector<PairContact>* contacts) {
+                        const StabilityOptions& options, std::vector<PairContact>* contacts,
+                        const std::function<bool(const PairContact&)>& wanted) {
   const double vertical = std::cos(options.support_normal_tolerance);
   for (PairContact& pair : *contacts) {
-    if (std::abs(pair.normal.z()) < vertical) continue;
+    if (std::abs(pair.normal.z()) < vertical || (wanted && !wanted(pair))) continue;
     const bool b_below = pair.normal.z() > 0.0;
     std::vector<Eigen::Vector3d> patch;
     if (flushContactPatch(solid_of(b_below ? pair.b : pair.a), solid_of(b_below ? pair.a : pair.b),

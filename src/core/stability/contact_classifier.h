@@ -48,8 +48,11 @@ SupporterTest frozenOrGround(const SupportGraph& graph);
 /// their exact overlap rather than the points Bullet kept: its box-box
 /// clipper keeps only penetrating points, so a brick tilted by a
 /// micro-radian reports half its patch. Applied to the contacts whose normal
-/// is within `support_normal_tolerance` of vertical; `solid_of` gives a body's solid.
+/// is within `support_normal_tolerance` of vertical and, when `wanted` is
+/// given, that it accepts (a patch no one will judge is not worth the
+/// clipping); `solid_of` gives a body's solid.
 void refineFlushPatches(const std::function<PlacedSolid(BodyHandle)>& solid_of,
-                        const StabilityOptions& options, std::vector<PairContact>* contacts);
+                        const StabilityOptions& options, std::vector<PairContact>* contacts,
+                        const std::function<bool(const PairContact&)>& wanted = {});
 
 }  // namespace brick_stack_sim

@@ -78,20 +78,29 @@ void advanceBullet(WorldState* w, const StepContext& step) {
 /// overlap. Only a brick at rest can join the stack, and only a frozen
 /// brick in Bullet's world can bear a mover's load: while every mover is
 /// faster than the rest speeds and far from the stack (a pile in the air),
-/// nothing is read.
+/// nothing is read. A pair's patch is judged only for a brick of it at
+/// rest (the loads come from the engine's points): a landing pile's pairs
+/// of bricks still tumbling are not clipped.
 void readStepContacts(WorldState* w) {
   const StabilityOptions& rest = w->options.stability;
-  const bool any_resting =
-      std::any_of(w->sets.movers().begin(), w->sets.movers().end(), [&](const BrickRecord* b) {
-        return w->scene.linearSpeed(b->handle) < rest.rest_linear_speed &&
-               w->scene.angularSpeed(b->handle) < rest.rest_angular_speed;
-      });
-  if (!any_resting && w->dormant.inWorld().empty() && w->presses.empty()) {
+  // The model's own test of rest, bit for bit (its velocities, its norm).
+  std::vector<BodyHandle> resting;
+  for (const BrickRecord* b : w->sets.movers())
+    if (w->scene.linearVelocity(b->handle).norm() < rest.rest_linear_speed &&
+        w->scene.angularVelocity(b->handle).norm() < rest.rest_angular_speed)
+      resting.push_back(b->handle);
+  if (resting.empty() && w->dormant.inWorld().empty() && w->presses.empty()) {
     w->contacts.clear();
     return;
   }
+  std::sort(resting.begin(), resting.end());
+  const auto at_rest = [&resting](BodyHandle handle) {
+    return std::binary_search(resting.begin(), resting.end(), handle);
+  };
   readContacts(w->scene, rest.contact_distance, &w->contacts);
-  refineFlushPatches([w](BodyHandle handle) { return w->solidOf(handle); }, rest, &w->contacts);
+  refineFlushPatches(
+      [w](BodyHandle handle) { return w->solidOf(handle); }, rest, &w->contacts,
+      [&at_rest](const PairContact& pair) { return at_rest(pair.a) || at_rest(pair.b); });
   w->contacts.insert(w->contacts.end(), w->presses.begin(), w->presses.end());
 }
 

@@ -102,6 +102,12 @@ TEST(ContactClassifier, FlushFacesGetTheirWholeOverlap) {
   refineFlushPatches(solid_of, StabilityOptions(), &side);
   EXPECT_EQ(side[0].points.size(), 4u);
   EXPECT_EQ(side[0].points[0], contact(1, 0, Eigen::Vector3d::UnitX()).points[0]);
+  // A pair the caller does not want judged keeps Bullet's two points.
+  std::vector<PairContact> unwanted = {half};
+  refineFlushPatches(solid_of, StabilityOptions(), &unwanted,
+                     [](const PairContact& pair) { return pair.a == 7 || pair.b == 7; });
+  ASSERT_EQ(unwanted[0].points.size(), 2u);
+  EXPECT_EQ(unwanted[0].points[1], half.points[1]);
 }
 
 TEST(ContactIndex, SkipsContactsWithoutPoints) {
