@@ -2,9 +2,13 @@
 
 namespace brick_stack_sim {
 
+bool slowerThanRestSpeeds(const BodyMotion& body, const StabilityOptions& options) {
+  return body.linear_velocity.norm() < options.rest_linear_speed &&
+         body.angular_velocity.norm() < options.rest_angular_speed;
+}
+
 bool RestTracker::atRest(const BodyMotion& body) const {
-  return body.linear_velocity.norm() < options_.rest_linear_speed &&
-         body.angular_velocity.norm() < options_.rest_angular_speed;
+  return slowerThanRestSpeeds(body, options_);
 }
 
 RestTracker::Mover& RestTracker::advance(const BodyMotion& body, double dt) {

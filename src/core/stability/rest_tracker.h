@@ -6,6 +6,11 @@
 
 namespace brick_stack_sim {
 
+/// Whether `body` is slower than both rest speeds of `options` (thesis
+/// 3.3.2): the one test of rest, for the model and for what the world reads
+/// on its behalf.
+bool slowerThanRestSpeeds(const BodyMotion& body, const StabilityOptions& options);
+
 /// How long each moving brick has been at rest (thesis 3.3.2), and what the
 /// model last found about its supports while it moves.
 class RestTracker {

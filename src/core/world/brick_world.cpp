@@ -7,6 +7,7 @@
 
 #include "bullet/contact_reader.h"
 #include "stability/contact_classifier.h"
+#include "stability/rest_tracker.h"
 #include "stability/stability_registry.h"
 #include "util/text_format.h"
 #include "world/held_bricks.h"
@@ -83,12 +84,9 @@ void advanceBullet(WorldState* w, const StepContext& step) {
 /// of bricks still tumbling are not clipped.
 void readStepContacts(WorldState* w) {
   const StabilityOptions& rest = w->options.stability;
-  // The model's own test of rest, bit for bit (its velocities, its norm).
   std::vector<BodyHandle> resting;
   for (const BrickRecord* b : w->sets.movers())
-    if (w->scene.linearVelocity(b->handle).norm() < rest.rest_linear_speed &&
-        w->scene.angularVelocity(b->handle).norm() < rest.rest_angular_speed)
-      resting.push_back(b->handle);
+    if (slowerThanRestSpeeds(w->motionOf(*b), rest)) resting.push_back(b->handle);
   if (resting.empty() && w->dormant.inWorld().empty() && w->presses.empty()) {
     w->contacts.clear();
     return;
