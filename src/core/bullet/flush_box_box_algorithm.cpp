@@ -39,32 +39,43 @@ double aboveFace(const OrientedBox& box, const Eigen::Vector3d& direction,
   return (point - box.pose.translation()).dot(outward) - box.half_extents[axis];
 }
 
+/// Which corners of a polygon a manifold takes: at most four.
+struct ChosenCorners {
+  std::array<std::size_t, 4> index{};
+  std::size_t count = 0;
+};
+
 /// The four corners of the convex polygon `corners` (in order) that span
 /// the largest area, in order; all of them when there are no more than four.
 /// The first of equal quadrilaterals wins, so the choice is the same every
 /// step while the polygon stays.
-std::vector<Eigen::Vector3d> widestFour(const std::vector<Eigen::Vector3d>& corners,
-                                        const Eigen::Vector3d& normal) {
-  const int n = static_cast<int>(corners.size());
-  if (n <= 4) return corners;
+ChosenCorners widestFour(const std::vector<Eigen::Vector3d>& corners,
+                         const Eigen::Vector3d& normal) {
+  const std::size_t n = corners.size();
+  ChosenCorners chosen;
+  if (n <= 4) {
+    for (std::size_t i = 0; i < n; ++i) chosen.index[i] = i;
+    chosen.count = n;
+    return chosen;
+  }
   // A quadrilateral of a convex polygon's corners taken in order is convex:
   // twice its area is the cross product of its diagonals.
-  const auto area = [&](int a, int b, int c, int d) {
+  const auto area = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
     return std::abs((corners[c] - corners[a]).cross(corners[d] - corners[b]).dot(normal));
   };
   double widest = -1.0;
-  std::array<int, 4> chosen{};
-  for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b)
-      for (int c = b + 1; c < n; ++c)
-        for (int d = c + 1; d < n; ++d) {
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c)
+        for (std::size_t d = c + 1; d < n; ++d) {
           const double twice = area(a, b, c, d);
           if (twice > widest) {
             widest = twice;
-            chosen = {a, b, c, d};
+            chosen.index = {a, b, c, d};
           }
         }
-  return {corners[chosen[0]], corners[chosen[1]], corners[chosen[2]], corners[chosen[3]]};
+  chosen.count = 4;
+  return chosen;
 }
 
 }  // namespace
@@ -90,7 +101,7 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
                                            const btCollisionObjectWrapper& body1,
                                            btManifoldResult* result) const {
   const OrientedBox box0 = orientedBox(body0), box1 = orientedBox(body1);
-  std::vector<Eigen::Vector3d> patch;
+  std::vector<Eigen::Vector3d>& patch = patch_;
   Eigen::Vector3d normal;  // the lower face's, towards the upper box
   // Bullet's B is body1: its normal points from body1 towards body0. Which
   // box lies on the other is asked both ways: on a slope the upper one's
@@ -104,12 +115,16 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
     Eigen::Vector3d on_lower, on_upper;
     double depth;  // < 0: penetrating
   };
-  std::vector<Corner> corners;
-  for (const Eigen::Vector3d& c : widestFour(patch, normal)) {
+  std::array<Corner, 4> within_reach;
+  std::size_t count = 0;
+  const ChosenCorners chosen = widestFour(patch, normal);
+  for (std::size_t i = 0; i < chosen.count; ++i) {
+    const Eigen::Vector3d& c = patch[chosen.index[i]];
     const double depth = aboveFace(upper, -normal, c);
-    if (depth <= reach) corners.push_back({c, c + normal * depth, depth});
+    if (depth <= reach) within_reach[count++] = {c, c + normal * depth, depth};
   }
-  if (corners.empty()) return false;
+  if (count == 0) return false;
+  const auto corners_end = within_reach.begin() + static_cast<std::ptrdiff_t>(count);
   // Points the corners will not replace would hold slots the manifold then
   // frees by its own choice: they go first. A corner replaces the point it
   // lies within reach of, and keeps its warm start.
@@ -119,17 +134,17 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
     const Eigen::Vector3d middle =
         0.5 * convertBtToEigen(cached.getPositionWorldOnA() + cached.getPositionWorldOnB());
     bool kept = false;
-    for (const Corner& corner : corners)
-      kept |= (0.5 * (corner.on_lower + corner.on_upper) - middle).norm() < reach;
+    for (auto corner = within_reach.begin(); corner != corners_end; ++corner)
+      kept |= (0.5 * (corner->on_lower + corner->on_upper) - middle).norm() < reach;
     if (!kept) manifold_->removeContactPoint(j);
   }
-  for (const Corner& corner : corners) {
+  for (auto corner = within_reach.begin(); corner != corners_end; ++corner) {
     if (body1_lower)
-      result->addContactPoint(convertEigenToBt(normal), convertEigenToBt(corner.on_lower),
-                              corner.depth);
+      result->addContactPoint(convertEigenToBt(normal), convertEigenToBt(corner->on_lower),
+                              corner->depth);
     else
-      result->addContactPoint(convertEigenToBt(-normal), convertEigenToBt(corner.on_upper),
-                              corner.depth);
+      result->addContactPoint(convertEigenToBt(-normal), convertEigenToBt(corner->on_upper),
+                              corner->depth);
   }
   result->refreshContactPoints();
   return true;

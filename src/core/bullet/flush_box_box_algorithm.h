@@ -1,7 +1,10 @@
 #pragma once
 
+#include <vector>
+
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 #include <btBulletCollisionCommon.h>
+#include <Eigen/Core>
 
 namespace brick_stack_sim {
 
@@ -45,6 +48,9 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   /// The pair's manifold, which the base class owns (null when the pair
   /// needs no collision).
   btPersistentManifold* manifold_ = nullptr;
+  /// The overlap of the faces, kept between steps so that a resting pair's
+  /// step does not go to the heap for it.
+  mutable std::vector<Eigen::Vector3d> patch_;
 };
 
 }  // namespace brick_stack_sim

@@ -84,11 +84,21 @@ std::array<Eigen::Vector3d, 4> faceCorners(const OrientedBox& box, int axis,
   return {centre - du - dv, centre + du - dv, centre + du + dv, centre - du + dv};
 }
 
+/// cos(`angle`), worked out again only when the angle changes: the
+/// narrowphase asks flushContactPatch() of every pair within reach every
+/// step, always with the same angle.
+double cosineOf(double angle) {
+  thread_local double last_angle = 0.0, last_cosine = 1.0;
+  if (angle != last_angle) {
+    last_cosine = std::cos(angle);
+    last_angle = angle;
+  }
+  return last_cosine;
+}
+
 /// `face` seen from above.
-std::vector<Eigen::Vector2d> fromAbove(const std::array<Eigen::Vector3d, 4>& face) {
-  std::vector<Eigen::Vector2d> corners;
-  for (const Eigen::Vector3d& c : face) corners.push_back(c.head<2>());
-  return corners;
+std::array<Eigen::Vector2d, 4> fromAbove(const std::array<Eigen::Vector3d, 4>& face) {
+  return {face[0].head<2>(), face[1].head<2>(), face[2].head<2>(), face[3].head<2>()};
 }
 
 }  // namespace
@@ -102,7 +112,7 @@ bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, doubl
   const int lower_axis = faceAxisToward(lower, Eigen::Vector3d::UnitZ(), &lower_normal);
   const int upper_axis = faceAxisToward(upper, -Eigen::Vector3d::UnitZ(), &upper_normal);
   if (lower_normal.z() <= 0.0) return false;  // a face that looks down carries nothing
-  if (lower_normal.dot(-upper_normal) < std::cos(max_angle)) return false;
+  if (lower_normal.dot(-upper_normal) < cosineOf(max_angle)) return false;
   // The faces must touch: a brick under a lintel or beside a neighbour has
   // parallel faces that overlap seen from above, on another plane.
   const Eigen::Vector3d lower_centre =
@@ -113,12 +123,13 @@ bool flushContactPatch(const OrientedBox& lower, const OrientedBox& upper, doubl
   if (lower_normal.dot(upper.pose.translation() - lower.pose.translation()) <= 0.0) return false;
   const std::array<Eigen::Vector3d, 4> lower_face = faceCorners(lower, lower_axis, lower_normal);
   const std::array<Eigen::Vector3d, 4> upper_face = faceCorners(upper, upper_axis, upper_normal);
-  const Polygon2d overlap =
-      intersectConvex(convexHull(fromAbove(upper_face)), convexHull(fromAbove(lower_face)));
+  InlinePolygon2d overlap;
+  intersectQuadrilaterals(fromAbove(upper_face), fromAbove(lower_face), &overlap);
   if (overlap.empty()) return false;
   // Lift each corner onto the plane of the lower face.
   const Eigen::Vector3d& origin = lower_face[0];
   patch->clear();
+  patch->reserve(overlap.size());
   for (const Eigen::Vector2d& corner : overlap) {
     const double z = origin.z() - (lower_normal.x() * (corner.x() - origin.x()) +
                                    lower_normal.y() * (corner.y() - origin.y())) /

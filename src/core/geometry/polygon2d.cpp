@@ -26,37 +26,111 @@ double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (a + t * ab - p).norm();
 }
 
+// The hull and the clip below are written once for two kinds of buffer: the
+// heap's (Polygon2d) and one held in place (InlinePolygon2d), so that both
+// give the same corners to the last bit.
+
+/// Sorts `points` and keeps, in place, the first of those closer than
+/// `merge_distance` [m] to one kept before.
+template <typename Points>
+void sortAndMerge(Points* points, double merge_distance) {
+  std::sort(points->begin(), points->end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const Eigen::Vector2d p = (*points)[i];
+    // Further apart in x than the distance, never closer in all (the norm
+    // of a vector is at least each of its components, in doubles too): the
+    // square root is left for the few that are near.
+    const bool duplicate = std::any_of(
+        points->begin(), points->begin() + static_cast<std::ptrdiff_t>(kept),
+        [&](const Eigen::Vector2d& q) {
+          return std::abs(p.x() - q.x()) <= merge_distance && (p - q).norm() <= merge_distance;
+        });
+    if (!duplicate) (*points)[kept++] = p;
+  }
+  points->resize(kept);
+}
+
+/// The hull of sorted, merged `unique` points into `hull`.
+template <typename Points>
+void chainHull(const Points& unique, Points* hull) {
+  if (unique.size() < 3) {
+    hull->resize(unique.size());
+    std::copy(unique.begin(), unique.end(), hull->begin());
+    return;
+  }
+  hull->resize(2 * unique.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < unique.size(); ++i) {  // lower chain
+    while (k >= 2 && cross((*hull)[k - 2], (*hull)[k - 1], unique[i]) <= 0.0) --k;
+    (*hull)[k++] = unique[i];
+  }
+  for (std::size_t i = unique.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
+    while (k >= lower && cross((*hull)[k - 2], (*hull)[k - 1], unique[i]) <= 0.0) --k;
+    (*hull)[k++] = unique[i];
+  }
+  hull->resize(k - 1);  // the last point repeats the first
+  if (hull->size() < 3) {
+    // All points collinear: keep the two extremes as a segment.
+    hull->resize(2);
+    (*hull)[0] = unique[0];
+    (*hull)[1] = unique[unique.size() - 1];
+  }
+}
+
+/// Sutherland-Hodgman: `subject` clipped by each edge's inner half-plane of
+/// `clip` in turn, with `first` and `second` as the two buffers passed back
+/// and forth; returns the one that holds the result. Each half-plane at
+/// most doubles the corners.
+template <typename Points>
+Points* clipConvex(const Points& subject, const Points& clip, Points* first, Points* second) {
+  Points* output = first;
+  Points* input = second;
+  output->resize(subject.size());
+  std::copy(subject.begin(), subject.end(), output->begin());
+  for (std::size_t i = 0; i < clip.size() && !output->empty(); ++i) {
+    const Eigen::Vector2d& a = clip[i];
+    const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
+    std::swap(input, output);
+    output->clear();
+    for (std::size_t j = 0; j < input->size(); ++j) {
+      const Eigen::Vector2d& p = (*input)[j];
+      const Eigen::Vector2d& q = (*input)[(j + 1) % input->size()];
+      const double side_p = cross(a, b, p), side_q = cross(a, b, q);
+      if (side_p >= 0.0) output->push_back(p);
+      if ((side_p >= 0.0) != (side_q >= 0.0))
+        output->push_back(p + (q - p) * (side_p / (side_p - side_q)));
+    }
+  }
+  return output;
+}
+
+/// intersectConvex() into `overlap`, with `scratch` as a second buffer.
+template <typename Points>
+void intersectInto(const Points& subject, const Points& clip, Points* overlap, Points* scratch) {
+  if (subject.size() < 3 || clip.size() < 3) {
+    overlap->clear();
+    return;
+  }
+  Points* clipped = clipConvex(subject, clip, scratch, overlap);
+  Points* hull = clipped == scratch ? overlap : scratch;
+  sortAndMerge(clipped, kHullMergeDistance);
+  chainHull(*clipped, hull);
+  if (hull->size() < 3) hull->clear();
+  if (hull != overlap) {
+    overlap->resize(hull->size());
+    std::copy(hull->begin(), hull->end(), overlap->begin());
+  }
+}
+
 }  // namespace
 
 Polygon2d convexHull(std::vector<Eigen::Vector2d> points, double merge_distance) {
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  Polygon2d unique;
-  unique.reserve(points.size());
-  for (const Eigen::Vector2d& p : points) {
-    const bool duplicate = std::any_of(unique.begin(), unique.end(), [&](const Eigen::Vector2d& q) {
-      return (p - q).norm() <= merge_distance;
-    });
-    if (!duplicate) unique.push_back(p);
-  }
-  if (unique.size() < 3) return unique;
-
-  Polygon2d hull(2 * unique.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < unique.size(); ++i) {  // lower chain
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], unique[i]) <= 0.0) --k;
-    hull[k++] = unique[i];
-  }
-  for (std::size_t i = unique.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], unique[i]) <= 0.0) --k;
-    hull[k++] = unique[i];
-  }
-  hull.resize(k - 1);  // the last point repeats the first
-  if (hull.size() < 3) {
-    // All points collinear: keep the two extremes as a segment.
-    return Polygon2d{unique.front(), unique.back()};
-  }
+  sortAndMerge(&points, merge_distance);
+  Polygon2d hull;
+  chainHull(points, &hull);
   return hull;
 }
 
@@ -83,9 +157,9 @@ Eigen::Vector2d nearestPoint(const Polygon2d& hull, const Eigen::Vector2d& point
     const Eigen::Vector2d& a = hull[i];
     const Eigen::Vector2d& b = hull[(i + 1) % hull.size()];
     const Eigen::Vector2d edge = b - a;
-    const double t =
-        edge.squaredNorm() > 0.0 ? std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0)
-                                 : 0.0;
+    const double t = edge.squaredNorm() > 0.0
+                         ? std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0)
+                         : 0.0;
     const Eigen::Vector2d candidate = a + t * edge;
     if ((candidate - point).squaredNorm() < (nearest - point).squaredNorm()) nearest = candidate;
   }
@@ -97,29 +171,25 @@ bool contains(const Polygon2d& hull, const Eigen::Vector2d& point, double tolera
 }
 
 Polygon2d intersectConvex(const Polygon2d& subject, const Polygon2d& clip) {
-  if (subject.size() < 3 || clip.size() < 3) return {};
-  // Sutherland-Hodgman: clip by each edge's inner half-plane in turn. Two
-  // buffers passed back and forth: the narrowphase clips every resting
-  // pair of faces every step.
-  Polygon2d output = subject, input;
-  output.reserve(subject.size() + clip.size());
-  input.reserve(subject.size() + clip.size());
-  for (std::size_t i = 0; i < clip.size() && !output.empty(); ++i) {
-    const Eigen::Vector2d& a = clip[i];
-    const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
-    std::swap(input, output);
-    output.clear();
-    for (std::size_t j = 0; j < input.size(); ++j) {
-      const Eigen::Vector2d& p = input[j];
-      const Eigen::Vector2d& q = input[(j + 1) % input.size()];
-      const double side_p = cross(a, b, p), side_q = cross(a, b, q);
-      if (side_p >= 0.0) output.push_back(p);
-      if ((side_p >= 0.0) != (side_q >= 0.0))
-        output.push_back(p + (q - p) * (side_p / (side_p - side_q)));
-    }
-  }
-  const Polygon2d hull = convexHull(output);
-  return hull.size() < 3 ? Polygon2d{} : hull;
+  Polygon2d overlap, scratch;
+  overlap.reserve(subject.size() + clip.size());
+  scratch.reserve(subject.size() + clip.size());
+  intersectInto(subject, clip, &overlap, &scratch);
+  return overlap;
+}
+
+void intersectQuadrilaterals(const std::array<Eigen::Vector2d, 4>& subject,
+                             const std::array<Eigen::Vector2d, 4>& clip, InlinePolygon2d* overlap) {
+  InlinePolygon2d subject_hull, clip_hull, scratch;
+  // Four corners clipped by four half-planes: at most 64 corners.
+  static_assert(InlinePolygon2d::kCapacity >= 2 * 64, "room for the hull of the clipped corners");
+  scratch.assign(subject.begin(), subject.end());
+  sortAndMerge(&scratch, kHullMergeDistance);
+  chainHull(scratch, &subject_hull);
+  scratch.assign(clip.begin(), clip.end());
+  sortAndMerge(&scratch, kHullMergeDistance);
+  chainHull(scratch, &clip_hull);
+  intersectInto(subject_hull, clip_hull, overlap, &scratch);
 }
 
 double area(const Polygon2d& hull) {
