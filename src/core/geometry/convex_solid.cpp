@@ -385,6 +385,14 @@ std::vector<BoxContactFace> touchingContacts(const PlacedSolid& a, const PlacedS
 bool flushContactPatch(const PlacedSolid& lower, const PlacedSolid& upper, double max_angle,
                        double max_gap, std::vector<Eigen::Vector3d>* patch,
                        Eigen::Vector3d* normal) {
+  // A box on a box, the common case, without walking parts: the contact
+  // stage asks this of every resting pair every step.
+  const std::vector<ConvexPart>& lower_parts = lower.solid->parts;
+  const std::vector<ConvexPart>& upper_parts = upper.solid->parts;
+  if (lower_parts.size() == 1 && upper_parts.size() == 1 && lower_parts[0].isBox() &&
+      upper_parts[0].isBox())
+    return flushContactPatch(boxOf(lower.pose, lower_parts[0]), boxOf(upper.pose, upper_parts[0]),
+                             max_angle, max_gap, patch, normal);
   std::vector<Eigen::Vector3d> found;
   std::optional<Eigen::Vector3d> first_normal;
   PlacedParts parts_l(lower), parts_u(upper);
