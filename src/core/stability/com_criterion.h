@@ -104,11 +104,12 @@ class ComCriterion : public StabilityCriterion {
   StabilityOptions options_;
   BodyNamer name_of_;
   bool statics_on_every_failure_ = false;
-  /// The last component LP's basis: a structure that grows brick by brick
+  /// Where the component LPs ended: a structure that grows brick by brick
   /// is re-solved from it (a warm start) rather than from scratch.
   mutable StaticsBasis basis_;
-  /// The last group LP's basis: a group asked again, or with the bricks
-  /// that cannot stay taken out, is mostly the same problem.
+  /// Where the group LPs ended: a group asked again at the next tick, or
+  /// with the bricks that cannot stay taken out, is mostly the same problem
+  /// (with the other groups' LPs between).
   mutable StaticsBasis group_basis_;
   /// A pile's component is judged again each time a brick joins it, and
   /// its leaning groups far from the newcomer pose the same LPs again.

@@ -13,6 +13,9 @@ namespace {
 /// A body whose dual velocity (at most 1) exceeds this moves in the
 /// mechanism; below it is the simplex's rounding.
 constexpr double kMoving = 1e-7;
+/// Names a basis remembers before it starts again from the last problem's
+/// alone (about 6 MB): three LPs of groups of 500 planks.
+constexpr std::size_t kRememberedNames = 100000;
 
 /// Sine of a contact normal's tilt from vertical [-] above which its
 /// pyramid is turned to the slope (1.1 degrees): on flatter contacts a
@@ -244,9 +247,12 @@ class BasisNames {
     return status;
   }
 
-  /// Replaces the basis by `model`'s final one.
+  /// Puts `model`'s final status under each of its names, keeping the
+  /// names of other problems, up to kRememberedNames in all.
   void keep(const ClpSimplex& model) const {
-    *warm_.basis = StaticsBasis();
+    const StaticsBasis& basis = *warm_.basis;
+    if (basis.columns.size() + basis.rows.size() + basis.imbalance.size() > kRememberedNames)
+      *warm_.basis = StaticsBasis();
     const unsigned char* status = model.statusArray();
     visit([&](std::map<std::pair<std::uint64_t, int>, unsigned char>& names,
               const std::pair<std::uint64_t, int>& name,

@@ -57,11 +57,13 @@ struct StaticsOptions {
   double tolerance = 1e-7;
 };
 
-/// Where an LP ended (Clp's basis), under names that outlive one problem,
-/// so that the next problem over mostly the same bodies and contacts starts
+/// Where LPs ended (Clp's basis), under names that outlive one problem, so
+/// that the next problem over mostly the same bodies and contacts starts
 /// from there instead of from scratch: a component that grows by a brick
-/// is re-solved in a few pivots. Opaque to callers; kept by them between
-/// solves.
+/// is re-solved in a few pivots. Each solve updates the names it has and
+/// keeps the others: problems that take turns (the groups of a pile, each
+/// asked every tick) each start from where they last ended. Opaque to
+/// callers; kept by them between solves.
 struct StaticsBasis {
   /// (contact key, cone edge), (body key, row 0..5), (body key, imbalance
   /// column 0..11) -> ClpSimplex::Status.
