@@ -12,8 +12,8 @@ void WorldState::recordChange(Change change) {
 }
 
 std::vector<std::pair<std::uint64_t, BodyHandle>>::const_iterator WorldState::firstStampAfter(
-    std::uint64_t after) const {
-  return std::upper_bound(stamps.begin(), stamps.end(), after,
+    std::uint64_t revision) const {
+  return std::upper_bound(stamps.begin(), stamps.end(), revision,
                           [](std::uint64_t at, const auto& stamp) { return at < stamp.first; });
 }
 

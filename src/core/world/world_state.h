@@ -104,7 +104,8 @@ struct WorldState {
   /// its revision included.
   void recordChange(Change change);
   /// `brick` changed in this revision (BrickRecord::changed_at), and the
-  /// stamp is logged; the log keeps about as many stamps as bricks.
+  /// stamp is logged; the log keeps up to twice as many stamps as bricks
+  /// (plus 64), then drops its older half.
   void stampChanged(BrickRecord* brick);
 
   double time() const { return start_time + static_cast<double>(cost.steps) * options.time_step; }
