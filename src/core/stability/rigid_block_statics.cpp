@@ -248,7 +248,7 @@ class BasisNames {
   }
 
   /// Puts `model`'s final status under each of its names, keeping the
-  /// names of other problems, up to kRememberedNames in all.
+  /// names of other problems; past kRememberedNames the others go first.
   void keep(const ClpSimplex& model) const {
     const StaticsBasis& basis = *warm_.basis;
     if (basis.columns.size() + basis.rows.size() + basis.imbalance.size() > kRememberedNames)
