@@ -7,9 +7,9 @@
 #include <limits>
 #include <map>
 
-#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
 #include "brick_stack_sim/core/scene/generators.h"
+#include "brick_stack_sim/tools/penetration.h"
 
 namespace brick_stack_sim {
 
@@ -18,33 +18,6 @@ namespace {
 /// A brick that moved this far, or turned this much, has fallen [m], [rad].
 constexpr double kFallenDistance = 0.005;
 constexpr double kFallenAngle = 0.1;
-
-/// Deepest overlap of two bricks, or of a brick into the table, at the end [m].
-double deepestPenetration(const std::vector<BrickSnapshot>& bricks, const TableOptions& table) {
-  double deepest = 0.0;
-  // A snapshot without a solid is a box of its size.
-  std::vector<ConvexSolid> boxes;
-  boxes.reserve(bricks.size());
-  std::vector<PlacedSolid> solids;
-  std::vector<Eigen::AlignedBox3d> extents;
-  for (const BrickSnapshot& b : bricks) {
-    if (!b.solid) boxes.push_back(boxSolid(0.5 * b.size));
-    solids.push_back(PlacedSolid{b.pose, b.solid ? b.solid.get() : &boxes.back()});
-    const Eigen::AlignedBox3d box = bounds(solids.back());
-    extents.push_back(box);
-    // Into the table: only bricks on it (one that fell off may lie on the
-    // floor under the table top).
-    const Eigen::Vector3d& centre = b.pose.translation();
-    if (!b.fell_off && std::abs(centre.x()) < table.size.x() / 2 &&
-        std::abs(centre.y()) < table.size.y() / 2)
-      deepest = std::max(deepest, -box.min().z());
-  }
-  for (std::size_t i = 0; i < solids.size(); ++i)
-    for (std::size_t j = i + 1; j < solids.size(); ++j)
-      if (extents[i].intersects(extents[j]))
-        deepest = std::max(deepest, -separation(solids[i], solids[j]));
-  return deepest;
-}
 
 bool fallen(const BrickSnapshot& b) {
   const double moved = (b.pose.translation() - b.placed_pose.translation()).norm();
