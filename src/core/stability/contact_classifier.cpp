@@ -1,5 +1,6 @@
 #include "stability/contact_classifier.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -9,17 +10,28 @@ namespace brick_stack_sim {
 
 ContactIndex::ContactIndex(const std::vector<PairContact>* contacts) {
   if (!contacts) return;
+  std::vector<std::pair<BodyHandle, const PairContact*>> entries;
+  entries.reserve(2 * contacts->size());
   for (const PairContact& contact : *contacts) {
     if (contact.points.empty()) continue;
-    by_body_[contact.a].push_back(&contact);
-    by_body_[contact.b].push_back(&contact);
+    entries.emplace_back(contact.a, &contact);
+    entries.emplace_back(contact.b, &contact);
+  }
+  // Stable: each body's contacts stay in the step's order.
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  bodies_.reserve(entries.size());
+  contacts_.reserve(entries.size());
+  for (const auto& [body, contact] : entries) {
+    bodies_.push_back(body);
+    contacts_.push_back(contact);
   }
 }
 
-const std::vector<const PairContact*>& ContactIndex::of(BodyHandle handle) const {
-  static const std::vector<const PairContact*> kNoContacts;
-  auto found = by_body_.find(handle);
-  return found == by_body_.end() ? kNoContacts : found->second;
+ContactSpan ContactIndex::of(BodyHandle handle) const {
+  const auto [first, last] = std::equal_range(bodies_.begin(), bodies_.end(), handle);
+  const PairContact* const* base = contacts_.data();
+  return ContactSpan(base + (first - bodies_.begin()), base + (last - bodies_.begin()));
 }
 
 namespace {
@@ -41,8 +53,7 @@ std::vector<SupportPatch> inOrder(std::map<BodyHandle, SupportPatch>* by_support
 
 }  // namespace
 
-std::vector<SupportPatch> supportPatches(const BodyMotion& body,
-                                         const std::vector<const PairContact*>& contacts,
+std::vector<SupportPatch> supportPatches(const BodyMotion& body, ContactSpan contacts,
                                          const SupporterTest& can_support,
                                          const StabilityOptions& options,
                                          std::vector<SupportPatch>* side_contacts) {

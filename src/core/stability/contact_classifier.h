@@ -3,7 +3,6 @@
 // shares (thesis 3.3.1).
 
 #include <functional>
-#include <unordered_map>
 #include <vector>
 
 #include "brick_stack_sim/core/geometry/convex_solid.h"
@@ -13,15 +12,39 @@ namespace brick_stack_sim {
 
 class SupportGraph;
 
+/// A run of contact pointers: one body's contacts in a ContactIndex, or a
+/// vector's. A view, valid while what it views lives.
+class ContactSpan {
+ public:
+  ContactSpan() = default;
+  ContactSpan(const PairContact* const* first, const PairContact* const* last)
+      : first_(first), last_(last) {}
+  explicit ContactSpan(const std::vector<const PairContact*>& contacts)
+      : ContactSpan(contacts.data(), contacts.data() + contacts.size()) {}
+  const PairContact* const* begin() const { return first_; }
+  const PairContact* const* end() const { return last_; }
+  bool empty() const { return first_ == last_; }
+  std::size_t size() const { return static_cast<std::size_t>(last_ - first_); }
+  const PairContact* operator[](std::size_t i) const { return first_[i]; }
+
+ private:
+  const PairContact* const* first_ = nullptr;
+  const PairContact* const* last_ = nullptr;
+};
+
 /// A step's contacts by the bodies they touch; contacts without points are
 /// left out.
 class ContactIndex {
  public:
   explicit ContactIndex(const std::vector<PairContact>* contacts);
-  const std::vector<const PairContact*>& of(BodyHandle handle) const;
+  /// The contacts of `handle`, in the step's order.
+  ContactSpan of(BodyHandle handle) const;
 
  private:
-  std::unordered_map<BodyHandle, std::vector<const PairContact*>> by_body_;
+  // Every body's contacts in one array, sorted by body: built every step
+  // for every mover, a map of one vector per body cost an allocation each.
+  std::vector<BodyHandle> bodies_;
+  std::vector<const PairContact*> contacts_;
 };
 
 /// May a brick rest on (or lean on) this body and join the stack? Frozen
@@ -35,8 +58,7 @@ using SupporterTest = std::function<bool(BodyHandle)>;
 /// `impact_speed` (an impact is not support). In supporter order. When
 /// `side_contacts` is given, the other contacts with such supporters go
 /// there, one patch per supporter too.
-std::vector<SupportPatch> supportPatches(const BodyMotion& body,
-                                         const std::vector<const PairContact*>& contacts,
+std::vector<SupportPatch> supportPatches(const BodyMotion& body, ContactSpan contacts,
                                          const SupporterTest& can_support,
                                          const StabilityOptions& options,
                                          std::vector<SupportPatch>* side_contacts = nullptr);

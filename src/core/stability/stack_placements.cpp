@@ -100,8 +100,7 @@ std::vector<BodyHandle> StackStabilityModel::carriedBy(BodyHandle brick) const {
   return std::vector<BodyHandle>(node->carries.begin(), node->carries.end());
 }
 
-bool StackStabilityModel::evaluateMover(const BodyMotion& body,
-                                        const std::vector<const PairContact*>& contacts,
+bool StackStabilityModel::evaluateMover(const BodyMotion& body, ContactSpan contacts,
                                         BrickStability* stability, FreezeDecision* decision) const {
   // A brick at rest on it is judged next, from the bottom up, and its
   // weight then passes through the stack; one that moves presses now.

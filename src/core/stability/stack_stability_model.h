@@ -14,6 +14,7 @@
 namespace brick_stack_sim {
 
 class ContactIndex;
+class ContactSpan;
 
 /// A stability model that freezes bricks into a support graph (thesis 3.3),
 /// with the rule for stable and unstable left to a criterion. A moving brick
@@ -110,8 +111,8 @@ class StackStabilityModel : public StabilityModel {
                     std::vector<BodyHandle>* cannot_stay) const;
   /// Evaluates `body` on its supports among `contacts` into `stability`;
   /// true (and `decision`) when the criterion admits it.
-  bool evaluateMover(const BodyMotion& body, const std::vector<const PairContact*>& contacts,
-                     BrickStability* stability, FreezeDecision* decision) const;
+  bool evaluateMover(const BodyMotion& body, ContactSpan contacts, BrickStability* stability,
+                     FreezeDecision* decision) const;
   void freeze(const BodyMotion& body, FreezeDecision decision, BrickStability stability,
               StabilityDecisions* decisions);
   /// A copy of the components `body` would join, admitted as `decision` on

@@ -150,7 +150,7 @@ StaticsVerdict judgeAlone(const BodyMotion& brick, const std::vector<PairContact
   // The COM margin of Brick.msg, on what carries it from below.
   BrickStability support;
   support.supports = supportPatches(
-      brick, pointers, [](BodyHandle) { return true; }, w.options.stability,
+      brick, ContactSpan(pointers), [](BodyHandle) { return true; }, w.options.stability,
       &support.side_contacts);
   evaluateSupport(brick.com, &support);
   verdict.margin = support.margin;

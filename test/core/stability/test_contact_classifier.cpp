@@ -122,6 +122,25 @@ TEST(ContactIndex, SkipsContactsWithoutPoints) {
   EXPECT_TRUE(ContactIndex(nullptr).of(0).empty());
 }
 
+TEST(ContactIndex, KeepsEachBodysContactsInTheStepsOrder) {
+  // Body 5 is a in some pairs and b in others, among pairs of other bodies:
+  // its patches are built in this order, so the order is part of the bits.
+  const std::vector<PairContact> contacts = {
+      contact(5, 9, Eigen::Vector3d::UnitZ()), contact(2, 3, Eigen::Vector3d::UnitZ()),
+      contact(4, 5, Eigen::Vector3d::UnitZ()), contact(5, kTableHandle, Eigen::Vector3d::UnitZ()),
+      contact(1, 5, Eigen::Vector3d::UnitZ())};
+  const ContactIndex index(&contacts);
+  const ContactSpan of_five = index.of(5);
+  ASSERT_EQ(of_five.size(), 4u);
+  EXPECT_EQ(of_five[0], &contacts[0]);
+  EXPECT_EQ(of_five[1], &contacts[2]);
+  EXPECT_EQ(of_five[2], &contacts[3]);
+  EXPECT_EQ(of_five[3], &contacts[4]);
+  ASSERT_EQ(index.of(kTableHandle).size(), 1u);
+  EXPECT_EQ(index.of(kTableHandle)[0], &contacts[3]);
+  EXPECT_TRUE(index.of(6).empty());
+}
+
 TEST(RestTracker, RestTimeGrowsWhileAtRestAndStartsOverWhenNot) {
   StabilityOptions options;
   RestTracker tracker(options);
