@@ -30,13 +30,23 @@ OrientedBox orientedBox(const btCollisionObjectWrapper& body) {
   return box;
 }
 
-/// Signed distance [m] of `point` from the plane of the face of `box`
-/// turned most towards `direction`; negative inside the box.
-double aboveFace(const OrientedBox& box, const Eigen::Vector3d& direction,
-                 const Eigen::Vector3d& point) {
-  Eigen::Vector3d outward;
-  const int axis = faceAxisToward(box, direction, &outward);
-  return (point - box.pose.translation()).dot(outward) - box.half_extents[axis];
+/// The face of `box` turned most towards a direction, found once for the
+/// corners of a patch.
+struct FacingFace {
+  Eigen::Vector3d centre;    ///< the box's [m]
+  Eigen::Vector3d outward;   ///< the face's normal
+  double half_extent = 0.0;  ///< [m] along it
+  /// Signed distance [m] of `point` from the face's plane; negative inside the box.
+  double above(const Eigen::Vector3d& point) const {
+    return (point - centre).dot(outward) - half_extent;
+  }
+};
+
+FacingFace faceToward(const OrientedBox& box, const Eigen::Vector3d& direction) {
+  FacingFace face;
+  face.centre = box.pose.translation();
+  face.half_extent = box.half_extents[faceAxisToward(box, direction, &face.outward)];
+  return face;
 }
 
 /// Which corners of a polygon a manifold takes: at most four.
@@ -118,9 +128,10 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
   std::array<Corner, 4> within_reach;
   std::size_t count = 0;
   const ChosenCorners chosen = widestFour(patch, normal);
+  const FacingFace upper_face = faceToward(upper, -normal);
   for (std::size_t i = 0; i < chosen.count; ++i) {
     const Eigen::Vector3d& c = patch[chosen.index[i]];
-    const double depth = aboveFace(upper, -normal, c);
+    const double depth = upper_face.above(c);
     if (depth <= reach) within_reach[count++] = {c, c + normal * depth, depth};
   }
   if (count == 0) return false;
