@@ -3,14 +3,13 @@
 #include <algorithm>
 
 #include "brick_stack_sim/core/geometry/convex_solid.h"
+#include "brick_stack_sim/core/geometry/table_solid.h"
 
 namespace brick_stack_sim {
 
 double deepestPenetration(const std::vector<BrickSnapshot>& bricks, const TableOptions& table) {
-  const ConvexSolid slab =
-      boxSolid(Eigen::Vector3d(table.size.x() / 2, table.size.y() / 2, table.thickness / 2));
-  PlacedSolid placed_slab{Eigen::Isometry3d::Identity(), &slab};
-  placed_slab.pose.translation() = Eigen::Vector3d(0.0, 0.0, -table.thickness / 2);
+  const ConvexSolid slab = tableSolid(table);
+  const PlacedSolid placed_slab{tablePose(table), &slab};
   const Eigen::AlignedBox3d slab_bounds = bounds(placed_slab);
 
   // A snapshot without a solid is a box of its size.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "brick_stack_sim/core/geometry/table_solid.h"
+
 namespace brick_stack_sim {
 
 void WorldState::recordChange(Change change) {
@@ -71,9 +73,7 @@ WorldState::WorldState(const WorldOptions& world_options, const BrickTypeLibrary
     : options(world_options),
       types(brick_types),
       start_time(start),
-      table_solid(boxSolid(Eigen::Vector3d(world_options.table.size.x() / 2,
-                                           world_options.table.size.y() / 2,
-                                           world_options.table.thickness / 2))),
+      table_solid(tableSolid(world_options.table)),
       floor_solid(boxSolid(Eigen::Vector3d(1e3, 1e3, 0.5))),
       scene(world_options),
       dormant(&scene),
@@ -95,7 +95,7 @@ PlacedSolid WorldState::solidOf(BodyHandle handle) const {
   PlacedSolid placed;
   if (handle == kTableHandle) {
     placed.solid = &table_solid;
-    placed.pose.translation().z() = -options.table.thickness / 2;
+    placed.pose = tablePose(options.table);
   } else if (handle == kFloorHandle) {
     placed.solid = &floor_solid;
     placed.pose.translation().z() = -options.table.height - 0.5;
