@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "brick_stack_sim/core/geometry/convex_solid.h"
-#include "brick_stack_sim/core/geometry/table_solid.h"
+#include "brick_stack_sim/core/types/table_solid.h"
 
 namespace brick_stack_sim {
 

@@ -1,4 +1,4 @@
-#include "brick_stack_sim/core/geometry/table_solid.h"
+#include "brick_stack_sim/core/types/table_solid.h"
 
 namespace brick_stack_sim {
 
