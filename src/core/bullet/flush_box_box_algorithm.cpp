@@ -21,6 +21,21 @@ namespace {
 constexpr double kFlushAngle = 0.002;
 constexpr double kFlushGap = 1e-4;
 
+/// Whether a face of one box may lie within kFlushAngle of parallel to a
+/// face of the other. The cosine between two face normals is an entry of
+/// the boxes' relative rotation (up to sign), so when every entry is below
+/// cos(kFlushAngle) no pair of faces rests flush and no patch is looked for:
+/// most pairs of a landing pile's tumbling planks are settled by nine dot
+/// products. The margin only lets rounding through to the full test.
+bool mayRestFlush(const btMatrix3x3& basis0, const btMatrix3x3& basis1) {
+  static const double least_cosine = std::cos(kFlushAngle) - 1e-12;
+  const btMatrix3x3 relative = basis0.transposeTimes(basis1);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (std::abs(relative[i][j]) >= least_cosine) return true;
+  return false;
+}
+
 OrientedBox orientedBox(const btCollisionObjectWrapper& body) {
   const auto* shape = static_cast<const btBoxShape*>(body.getCollisionShape());
   OrientedBox box;
@@ -110,6 +125,8 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
 bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0,
                                            const btCollisionObjectWrapper& body1,
                                            btManifoldResult* result) const {
+  if (!mayRestFlush(body0.getWorldTransform().getBasis(), body1.getWorldTransform().getBasis()))
+    return false;
   const OrientedBox box0 = orientedBox(body0), box1 = orientedBox(body1);
   std::vector<Eigen::Vector3d>& patch = patch_;
   Eigen::Vector3d normal;  // the lower face's, towards the upper box
