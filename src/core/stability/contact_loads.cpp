@@ -1,6 +1,7 @@
 #include "stability/contact_loads.h"
 
 #include <algorithm>
+#include <array>
 
 #include "physics/body_handle.h"
 
@@ -11,18 +12,19 @@ namespace {
 /// The forces on `brick` at the points of `pair` (which touches it) [N]:
 /// each point's normal and friction impulses, which the engine gives as
 /// applied to `a`, over the step.
-std::vector<PointForce> forcesOn(BodyHandle brick, const PairContact& pair, double dt,
-                                 double force_scale) {
+void forcesOn(BodyHandle brick, const PairContact& pair, double dt, double force_scale,
+              std::vector<PointForce>* forces) {
   const double sign = (brick == pair.a ? 1.0 : -1.0) * force_scale / dt;
-  std::vector<PointForce> forces;
-  forces.reserve(pair.manifold.size());
+  forces->clear();
   for (const ContactPoint& point : pair.manifold) {
     const Eigen::Vector3d force = sign * (point.impulse * point.normal + point.friction_impulse);
     if (!force.allFinite() || force.isZero()) continue;
-    forces.push_back(PointForce{force, point.position});
+    forces->push_back(PointForce{force, point.position});
   }
-  return forces;
 }
+
+/// The larger windows are rare: their median is sorted on the heap.
+constexpr std::size_t kWindowOnStack = 64;
 
 }  // namespace
 
@@ -34,43 +36,45 @@ void ContactLoads::record(const std::vector<PairContact>& contacts, double dt, i
   for (const PairContact& pair : contacts) {
     for (const auto& [brick, other] : {std::pair{pair.a, pair.b}, std::pair{pair.b, pair.a}}) {
       if (isGround(brick) || isGround(other) || !measured(brick) || !source(other)) continue;
-      Sample sample;
-      sample.forces = forcesOn(brick, pair, dt, force_scale);
-      if (sample.forces.empty()) continue;
-      Eigen::Vector3d total = Eigen::Vector3d::Zero();
-      for (const PointForce& force : sample.forces) total += force.force;
-      sample.magnitude = total.norm();
+      forcesOn(brick, pair, dt, force_scale, &step_forces_);
+      if (step_forces_.empty()) continue;
       Window& w = windows_[{brick, other}];
-      if (w.steps.size() != steps) w = Window{std::vector<Sample>(steps), 0, false};
+      if (w.steps.size() != steps) w = Window{std::vector<Sample>(steps), 0, 0, false};
+      Sample& now = w.steps[w.next];
       if (w.seen) {  // a second manifold of the same pair
-        Sample& now = w.steps[w.next];
-        now.forces.insert(now.forces.end(), sample.forces.begin(), sample.forces.end());
-        total.setZero();
-        for (const PointForce& force : now.forces) total += force.force;
-        now.magnitude = total.norm();
-        continue;
+        now.forces.insert(now.forces.end(), step_forces_.begin(), step_forces_.end());
+      } else {
+        w.touching += now.forces.empty() ? 1 : 0;
+        now.forces.assign(step_forces_.begin(), step_forces_.end());
+        w.seen = true;
       }
-      w.steps[w.next] = std::move(sample);
-      w.seen = true;
+      Eigen::Vector3d total = Eigen::Vector3d::Zero();
+      for (const PointForce& force : now.forces) total += force.force;
+      now.magnitude = total.norm();
     }
   }
   for (auto it = windows_.begin(); it != windows_.end();) {
     Window& w = it->second;
-    if (!w.seen) w.steps[w.next] = Sample();
+    Sample& now = w.steps[w.next];
+    if (!w.seen && !now.forces.empty()) {
+      now.forces.clear();
+      now.magnitude = 0.0;
+      --w.touching;
+    }
     w.next = (w.next + 1) % w.steps.size();
     touched_.push_back(it->first.first);
-    const bool empty = std::all_of(w.steps.begin(), w.steps.end(),
-                                   [](const Sample& s) { return s.forces.empty(); });
-    it = empty ? windows_.erase(it) : std::next(it);
+    it = w.touching == 0 ? windows_.erase(it) : std::next(it);
   }
 }
 
 const ContactLoads::Sample* ContactLoads::median(const Window& window) {
-  std::vector<const Sample*> order;
-  order.reserve(window.steps.size());
-  for (const Sample& sample : window.steps) order.push_back(&sample);
-  const std::size_t middle = order.size() / 2;
-  std::nth_element(order.begin(), order.begin() + middle, order.end(),
+  const std::size_t count = window.steps.size();
+  std::array<const Sample*, kWindowOnStack> on_stack;
+  std::vector<const Sample*> on_heap(count > kWindowOnStack ? count : 0);
+  const Sample** order = count > kWindowOnStack ? on_heap.data() : on_stack.data();
+  for (std::size_t i = 0; i < count; ++i) order[i] = &window.steps[i];
+  const std::size_t middle = count / 2;
+  std::nth_element(order, order + middle, order + count,
                    [](const Sample* x, const Sample* y) { return x->magnitude < y->magnitude; });
   return order[middle]->forces.empty() ? nullptr : order[middle];
 }
@@ -100,8 +104,7 @@ void ContactLoads::forgetSource(BodyHandle body) { forgetWhere(body, false); }
 
 void ContactLoads::forgetWhere(BodyHandle body, bool as_loaded_brick) {
   for (auto it = windows_.begin(); it != windows_.end();) {
-    const bool involved =
-        it->first.second == body || (as_loaded_brick && it->first.first == body);
+    const bool involved = it->first.second == body || (as_loaded_brick && it->first.first == body);
     if (involved) touched_.push_back(it->first.first);
     it = involved ? windows_.erase(it) : std::next(it);
   }

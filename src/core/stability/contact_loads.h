@@ -53,11 +53,14 @@ class ContactLoads {
     std::vector<PointForce> forces;
     double magnitude = 0.0;  ///< Of their sum [N].
   };
-  /// The last steps of one pair, oldest overwritten first.
+  /// The last steps of one pair, oldest overwritten first. A step's slot
+  /// keeps its storage when it is overwritten: every pair of a pile writes
+  /// one a step.
   struct Window {
     std::vector<Sample> steps;
     std::size_t next = 0;
-    bool seen = false;  ///< In this step's contacts.
+    std::size_t touching = 0;  ///< Steps with forces; none: the pair is forgotten.
+    bool seen = false;         ///< In this step's contacts.
   };
 
   /// The median step of `window`; null when the pair touched in fewer than
@@ -69,6 +72,7 @@ class ContactLoads {
   /// (loaded brick, source) -> its window.
   std::map<std::pair<BodyHandle, BodyHandle>, Window> windows_;
   std::vector<BodyHandle> touched_;
+  std::vector<PointForce> step_forces_;  ///< record()'s, kept for its storage.
 };
 
 }  // namespace brick_stack_sim
