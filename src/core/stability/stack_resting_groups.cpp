@@ -34,6 +34,7 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
     if (!body) continue;
     candidate[body->handle] = i;
   }
+  std::map<BodyHandle, bool> pressed_components;
   std::set<BodyHandle> seen;
   for (const auto& entry : candidate) {
     const BodyHandle start = entry.first;
@@ -49,14 +50,15 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
     std::sort(group.begin(), group.end());
     std::vector<BodyMotion> bodies;
     for (BodyHandle member : group) bodies.push_back(*(*resting)[candidate.at(member)]);
-    for (BodyHandle frozen : freezeWhatStands(std::move(bodies), index, decisions))
+    for (BodyHandle frozen :
+         freezeWhatStands(std::move(bodies), index, &pressed_components, decisions))
       (*resting)[candidate.at(frozen)] = nullptr;
   }
 }
 
-std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMotion> bodies,
-                                                              const ContactIndex& index,
-                                                              StabilityDecisions* decisions) {
+std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(
+    std::vector<BodyMotion> bodies, const ContactIndex& index,
+    std::map<BodyHandle, bool>* pressed_components, StabilityDecisions* decisions) {
   // The rest must stand without the bricks left out, which may fall away,
   // and bear their weight where they stay: each presses on the members it
   // touches with its measured load. A brick at rest that is not due yet
@@ -69,6 +71,12 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMo
   for (int round = 0; round <= kWithoutMechanismRounds && bodies.size() >= 2; ++round) {
     std::vector<BrickStability> stability;
     if (!evaluateGroup(bodies, index, &presses, &stability)) break;
+    // Where a mover presses on what a member would join, standsJoined()
+    // refuses every group that keeps that member, after its LPs: on a
+    // landing pile, most of what large groups were asked. Such a group
+    // waits as a whole, unasked; those members stay the same however
+    // many others are left out.
+    if (round == 0 && pressedWhereItWouldJoin(bodies, stability, pressed_components)) break;
     std::vector<FreezeDecision> admitted;
     std::vector<BodyHandle> cannot_stay;
     if (criterion_->admitsGroup(bodies, stability, &admitted, &cannot_stay) &&
@@ -93,6 +101,32 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(std::vector<BodyMo
     std::sort(left_out.begin(), left_out.end());
   }
   return {};
+}
+
+bool StackStabilityModel::pressedWhereItWouldJoin(
+    const std::vector<BodyMotion>& bodies, const std::vector<BrickStability>& stability,
+    std::map<BodyHandle, bool>* pressed_components) const {
+  const auto pressed = [this](BodyHandle brick) {
+    return !loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty();
+  };
+  // What a freeze merges is never pressed (standsJoined), and a pressed
+  // component is merged with nothing: the answers hold for a whole step's
+  // groups.
+  const auto component_pressed = [&](BodyHandle frozen) {
+    if (auto known = pressed_components->find(frozen); known != pressed_components->end())
+      return known->second;
+    std::set<BodyHandle> seen;
+    const std::vector<BodyHandle> component = graph_.componentOf(frozen, &seen);
+    const bool any = std::any_of(component.begin(), component.end(), pressed);
+    for (BodyHandle brick : component) (*pressed_components)[brick] = any;
+    return any;
+  };
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (pressed(bodies[i].handle)) return true;
+    for (BodyHandle supporter : supportersOf(stability[i]))
+      if (graph_.contains(supporter) && component_pressed(supporter)) return true;
+  }
+  return false;
 }
 
 bool StackStabilityModel::standsJoined(const std::vector<BodyMotion>& bodies,

@@ -83,10 +83,21 @@ class StackStabilityModel : public StabilityModel {
   /// when the criterion admits it and the stack it joins still passes its
   /// check; else the group without the members that must move whatever the
   /// others do (the collapse mechanism), asked again, those left out
-  /// pressing on it with their measured loads. Returns the bricks that froze.
+  /// pressing on it with their measured loads. A group a mover presses on
+  /// where it would join (pressedWhereItWouldJoin) waits as a whole, and
+  /// statics is not asked. Returns the bricks that froze.
   std::vector<BodyHandle> freezeWhatStands(std::vector<BodyMotion> bodies,
                                            const ContactIndex& index,
+                                           std::map<BodyHandle, bool>* pressed_components,
                                            StabilityDecisions* decisions);
+  /// Whether a brick that moves presses on a member of `bodies` (evaluated
+  /// into `stability`) or on a brick of a frozen component a member rests
+  /// or leans on: then the what-if of any group that keeps that member is
+  /// pressedByMovers(). `pressed_components` keeps, per frozen brick, its
+  /// component's answer for the rest of the step.
+  bool pressedWhereItWouldJoin(const std::vector<BodyMotion>& bodies,
+                               const std::vector<BrickStability>& stability,
+                               std::map<BodyHandle, bool>* pressed_components) const;
   /// `bodies` (in handle order), placed at rest together and touching each
   /// other as `index` says, join the stack together when something frozen
   /// or the ground holds them and the criterion admits them as a group.

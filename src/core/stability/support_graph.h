@@ -122,9 +122,11 @@ class SupportGraph {
   /// A copy of the components that hold `seeds` (the part a what-if query
   /// can touch), with no pending changes.
   SupportGraph componentsOf(const std::vector<BodyHandle>& seeds) const;
+  /// The bricks of the component that holds `start` (handle order), without
+  /// those already in `seen`, which gains them: a query that needs no copy.
+  std::vector<BodyHandle> componentOf(BodyHandle start, std::set<BodyHandle>* seen) const;
 
  private:
-  std::vector<BodyHandle> componentOf(BodyHandle start, std::set<BodyHandle>* seen) const;
   /// Unlinks `brick` from its supporters, which become dirty.
   void unlinkFromSupporters(BodyHandle brick, const Node& node);
 

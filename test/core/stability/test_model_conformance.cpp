@@ -53,6 +53,46 @@ PairContact onTable(BodyHandle b, double x) {
                  kKaplaWidth / 2, 0.0);
 }
 
+/// A contact along the points `points` of b's face with outward `normal`.
+PairContact faceContact(BodyHandle a, BodyHandle b, std::vector<Eigen::Vector3d> points,
+                        const Eigen::Vector3d& normal, double mu) {
+  PairContact contact;
+  contact.a = a;
+  contact.b = b;
+  contact.normal = normal;
+  contact.points = std::move(points);
+  contact.friction = mu;
+  return contact;
+}
+
+/// A V of planks b0 and b1 on the table at `theta` from vertical, their
+/// upper inner edges meeting at x = 0, at rest.
+struct RestingV {
+  std::vector<PairContact> contacts;
+  std::vector<BodyMotion> movers;
+  Eigen::Vector3d right_centre;  ///< b1's centre of mass [m]
+  double apex = 0.0;             ///< Height of the meeting edges [m].
+};
+
+RestingV restingV(double mu, double theta) {
+  const double l = kKaplaLength, t = kKaplaThickness, w = kKaplaWidth / 2;
+  const double foot = l * std::sin(theta);
+  RestingV v;
+  v.apex = l * std::cos(theta);
+  v.right_centre = Eigen::Vector3d(0.5 * (t * std::cos(theta) + l * std::sin(theta)), 0.0,
+                                   0.5 * (t * std::sin(theta) + l * std::cos(theta)));
+  v.contacts = {
+      faceContact(0, kTableHandle, {{-foot, -w, 0.0}, {-foot, w, 0.0}}, Eigen::Vector3d::UnitZ(),
+                  mu),
+      faceContact(1, kTableHandle, {{foot, -w, 0.0}, {foot, w, 0.0}}, Eigen::Vector3d::UnitZ(), mu),
+      faceContact(0, 1, {{0.0, -w, v.apex}, {0.0, w, v.apex}}, -Eigen::Vector3d::UnitX(), mu)};
+  const Eigen::Vector3d left_centre(-v.right_centre.x(), 0.0, v.right_centre.z());
+  v.movers = {
+      BodyMotion{0, left_centre, kKaplaMass, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+      BodyMotion{1, v.right_centre, kKaplaMass, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}};
+  return v;
+}
+
 class ModelConformance : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
@@ -263,32 +303,14 @@ TEST_P(ModelConformance, OfAGroupAtRestThePartStaticsHoldsFreezesWithoutWhatMust
   // V stands without b2 and freezes; b2 cannot, and stays with the engine.
   // Refused as a whole, the V never froze while b2 touched it.
   if (!model_->judgesLeaning()) GTEST_SKIP() << "judges no leaning groups";
-  const double mu = 0.5, theta = 0.5 * test::vThresholdAngle(mu);
-  const double l = kKaplaLength, t = kKaplaThickness, w = kKaplaWidth / 2;
-  const auto line = [&](BodyHandle a, BodyHandle b, std::vector<Eigen::Vector3d> points,
-                        const Eigen::Vector3d& normal) {
-    PairContact contact;
-    contact.a = a;
-    contact.b = b;
-    contact.normal = normal;
-    contact.points = std::move(points);
-    contact.friction = mu;
-    return contact;
-  };
-  const double foot = l * std::sin(theta), apex = l * std::cos(theta);
-  const double centre_x = 0.5 * (t * std::cos(theta) + l * std::sin(theta));
-  const double centre_z = 0.5 * (t * std::sin(theta) + l * std::cos(theta));
-  const std::vector<PairContact> contacts = {
-      line(0, kTableHandle, {{-foot, -w, 0.0}, {-foot, w, 0.0}}, Eigen::Vector3d::UnitZ()),
-      line(1, kTableHandle, {{foot, -w, 0.0}, {foot, w, 0.0}}, Eigen::Vector3d::UnitZ()),
-      line(0, 1, {{0.0, -w, apex}, {0.0, w, apex}}, -Eigen::Vector3d::UnitX()),
-      line(2, 1, {{centre_x, w, 0.4 * apex}, {centre_x, w, 0.6 * apex}}, Eigen::Vector3d::UnitY())};
-  const std::vector<BodyMotion> movers = {
-      BodyMotion{0, Eigen::Vector3d(-centre_x, 0.0, centre_z), kKaplaMass, Eigen::Vector3d::Zero(),
-                 Eigen::Vector3d::Zero()},
-      BodyMotion{1, Eigen::Vector3d(centre_x, 0.0, centre_z), kKaplaMass, Eigen::Vector3d::Zero(),
-                 Eigen::Vector3d::Zero()},
-      kapla(2, centre_x + 0.04, 2.0 * w, 0.5 * apex)};
+  const double mu = 0.5;
+  const RestingV v = restingV(mu, 0.5 * test::vThresholdAngle(mu));
+  const double w = kKaplaWidth / 2, x = v.right_centre.x();
+  std::vector<PairContact> contacts = v.contacts;
+  contacts.push_back(faceContact(2, 1, {{x, w, 0.4 * v.apex}, {x, w, 0.6 * v.apex}},
+                                 Eigen::Vector3d::UnitY(), mu));
+  std::vector<BodyMotion> movers = v.movers;
+  movers.push_back(kapla(2, x + 0.04, 2.0 * w, 0.5 * v.apex));
   stepFor(4.0 * options_.rest_time, movers, contacts);
   EXPECT_TRUE(frozen(0));
   EXPECT_TRUE(frozen(1));
@@ -296,6 +318,38 @@ TEST_P(ModelConformance, OfAGroupAtRestThePartStaticsHoldsFreezesWithoutWhatMust
   BrickStability left;
   ASSERT_TRUE(model_->describe(0, &left));
   EXPECT_FALSE(left.contact_forces.empty());
+}
+
+TEST_P(ModelConformance, AGroupAtRestWaitsWhileAMoverPressesOnItAndFreezesOnceItHasGone) {
+  // The V of the test above, which statics holds. A plank b3 sliding past
+  // the rest speed pushes b1 towards the apex, at the middle of its outer
+  // face, with 2 % of a plank's weight: while a moving brick presses on
+  // it, what statics says of the V may not hold a step on, so the V waits.
+  // Once the plank has gone, the V freezes.
+  if (!model_->judgesLeaning()) GTEST_SKIP() << "judges no leaning groups";
+  const double mu = 0.5, theta = 0.5 * test::vThresholdAngle(mu), dt = 1e-3;
+  const RestingV v = restingV(mu, theta);
+  const Eigen::Vector3d outward(std::cos(theta), 0.0, std::sin(theta));  // b1's outer face
+  const Eigen::Vector3d touch = v.right_centre + 0.5 * kKaplaThickness * outward;
+  PairContact push = faceContact(3, 1, {touch}, outward, mu);
+  ContactPoint point;
+  point.position = touch;
+  point.normal = outward;
+  point.impulse = 0.02 * kKaplaMass * 9.81 * dt;  // on b3; b1 bears its reaction
+  push.manifold = {point};
+  std::vector<PairContact> pressed = v.contacts;
+  pressed.push_back(push);
+  std::vector<BodyMotion> movers = v.movers;
+  movers.push_back(BodyMotion{3, touch + 0.5 * kKaplaThickness * outward, kKaplaMass,
+                              Eigen::Vector3d(0.0, 0.1, 0.0), Eigen::Vector3d::Zero()});
+
+  stepFor(4.0 * options_.rest_time, movers, pressed);
+  EXPECT_FALSE(frozen(0));
+  EXPECT_FALSE(frozen(1));
+
+  stepFor(4.0 * options_.rest_time, v.movers, v.contacts);
+  EXPECT_TRUE(frozen(0));
+  EXPECT_TRUE(frozen(1));
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, ModelConformance, ::testing::ValuesIn(test::modelModes()),
