@@ -92,6 +92,15 @@ double motionDuration(MotionCase motion) {
   return 1.0;
 }
 
+/// 200 bricks falling through the air, in the modes that sleep. Its run
+/// is a few tens of milliseconds, where one hiccup of a shared machine
+/// moved a mode by half: the fastest of five runs counts.
+void addFreeFall(BenchPlan* plan) {
+  plan->cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
+                                 settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  plan->cases.back().repeats = 5;
+}
+
 /// The motions with answers from mechanics, each at `settings`.
 void addMotions(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
   for (MotionCase motion : kMotionCases) {
@@ -128,8 +137,7 @@ BenchPlan quickBenchPlan() {
   BenchCase slant = makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, settings);
   plan.cases.push_back(slant);
   addPiles({"pile200"}, &plan);
-  plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
-                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  addFreeFall(&plan);
   addBuiltStructures(settingsFor(allModes(), {{1.0 / 1000, 20}}), &plan);
   const auto model_only = settingsFor(modelModes(), {{1.0 / 1000, 20}});
   for (const char* scene : {"moving10", "settled2000_moving10"}) {
@@ -158,8 +166,7 @@ BenchPlan fullBenchPlan() {
   plan.cases.push_back(makeCase("tower25", "tower25", BenchMetric::kSettled, 30.0, sweep));
   plan.cases.push_back(makeCase("harmonic10", "", BenchMetric::kHarmonic, 5.0, sweep));
   plan.cases.push_back(makeCase("slant_tower", "", BenchMetric::kSlantTower, 0.0, sweep));
-  plan.cases.push_back(makeCase("freefall200", "freefall200", BenchMetric::kDrop, 0.4,
-                                settingsFor(sleepingModes(), {{1.0 / 1000, 20}})));
+  addFreeFall(&plan);
   plan.cases.push_back(makeCase("tower100", "tower100", BenchMetric::kSettled, 30.0, steps));
   plan.cases.push_back(makeCase("pyramid210", "pyramid210", BenchMetric::kSettled, 30.0, defaults));
   addPiles({"pile200", "pile1000"}, &plan);
