@@ -11,6 +11,7 @@
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 
+#include "brick_stack_sim/core/types/table_solid.h"
 #include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_handles.h"
@@ -90,11 +91,10 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   gDbvtMargin = kBroadphaseMargin;
 
   const TableOptions& table = options.table;
-  table_shape = std::make_unique<btBoxShape>(
-      btVector3(table.size.x() / 2, table.size.y() / 2, table.thickness / 2));
+  table_shape = std::make_unique<btBoxShape>(convertEigenToBt(tableHalfExtents(table)));
   table_shape->setMargin(options.collision_margin);
   btRigidBody::btRigidBodyConstructionInfo table_info(0.0, nullptr, table_shape.get());
-  table_info.m_startWorldTransform.setOrigin(btVector3(0, 0, -table.thickness / 2));
+  table_info.m_startWorldTransform = convertEigenToBt(tablePose(table));
   table_info.m_friction = table.friction;
   table_info.m_restitution = table.restitution;
   table_body = std::make_unique<btRigidBody>(table_info);

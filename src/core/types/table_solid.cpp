@@ -2,9 +2,11 @@
 
 namespace brick_stack_sim {
 
-ConvexSolid tableSolid(const TableOptions& table) {
-  return boxSolid(Eigen::Vector3d(table.size.x() / 2, table.size.y() / 2, table.thickness / 2));
+Eigen::Vector3d tableHalfExtents(const TableOptions& table) {
+  return Eigen::Vector3d(table.size.x() / 2, table.size.y() / 2, table.thickness / 2);
 }
+
+ConvexSolid tableSolid(const TableOptions& table) { return boxSolid(tableHalfExtents(table)); }
 
 Eigen::Isometry3d tablePose(const TableOptions& table) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

@@ -7,8 +7,12 @@
 
 namespace brick_stack_sim {
 
+/// Half the table top's size along x and y and half its thickness [m]:
+/// the box that tableSolid() is and that Bullet collides with.
+Eigen::Vector3d tableHalfExtents(const TableOptions& table);
+
 /// The table's top as a solid: a box of its top face and thickness [m],
-/// centred on its own frame (what Bullet collides with).
+/// centred on its own frame.
 ConvexSolid tableSolid(const TableOptions& table);
 
 /// Where tableSolid() lies in the world: its top face at z = 0.
