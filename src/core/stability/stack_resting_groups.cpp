@@ -106,9 +106,6 @@ std::vector<BodyHandle> StackStabilityModel::freezeWhatStands(
 bool StackStabilityModel::pressedWhereItWouldJoin(
     const std::vector<BodyMotion>& bodies, const std::vector<BrickStability>& stability,
     std::map<BodyHandle, bool>* pressed_components) const {
-  const auto pressed = [this](BodyHandle brick) {
-    return !loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty();
-  };
   // What a freeze merges is never pressed (standsJoined), and a pressed
   // component is merged with nothing: the answers hold for a whole step's
   // groups.
@@ -117,12 +114,13 @@ bool StackStabilityModel::pressedWhereItWouldJoin(
       return known->second;
     std::set<BodyHandle> seen;
     const std::vector<BodyHandle> component = graph_.componentOf(frozen, &seen);
-    const bool any = std::any_of(component.begin(), component.end(), pressed);
+    const bool any = std::any_of(component.begin(), component.end(),
+                                 [this](BodyHandle brick) { return pressedByAMover(brick); });
     for (BodyHandle brick : component) (*pressed_components)[brick] = any;
     return any;
   };
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (pressed(bodies[i].handle)) return true;
+    if (pressedByAMover(bodies[i].handle)) return true;
     for (BodyHandle supporter : supportersOf(stability[i]))
       if (graph_.contains(supporter) && component_pressed(supporter)) return true;
   }

@@ -129,9 +129,13 @@ bool StackStabilityModel::moves(BodyHandle body) const {
   return !std::binary_search(resting_.begin(), resting_.end(), body);
 }
 
+bool StackStabilityModel::pressedByAMover(BodyHandle brick) const {
+  return !loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty();
+}
+
 bool StackStabilityModel::pressedByMovers(const SupportGraph& what_if) const {
   for (BodyHandle brick : what_if.bricks())
-    if (!loads_.on(brick, [this](BodyHandle source) { return moves(source); }).empty()) return true;
+    if (pressedByAMover(brick)) return true;
   return false;
 }
 

@@ -161,6 +161,8 @@ class StackStabilityModel : public StabilityModel {
   /// statics says of it now may not hold a step on (a collapse that has not
   /// ended).
   bool pressedByMovers(const SupportGraph& what_if) const;
+  /// Whether a load measured on `brick` comes from a brick that moves.
+  bool pressedByAMover(BodyHandle brick) const;
   /// Takes off the frozen bricks of `what_if` the loads measured from
   /// `joiners` (handle order), bricks at rest that join it: their weight
   /// now passes through their contacts, and kept as a load too it was

@@ -35,24 +35,6 @@ BodyMotion kapla(BodyHandle handle, double x, double y, double bottom) {
                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
 }
 
-/// `upper` resting on `lower` over the rectangle x0..x1, y0..y1 at height z.
-PairContact resting(BodyHandle upper, BodyHandle lower, double x0, double x1, double y0, double y1,
-                    double z) {
-  PairContact contact;
-  contact.a = upper;
-  contact.b = lower;
-  contact.normal = Eigen::Vector3d::UnitZ();
-  contact.points = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
-  contact.friction = 0.5;
-  return contact;
-}
-
-/// Brick b along x at (x, 0) on the table: its whole bottom face touches.
-PairContact onTable(BodyHandle b, double x) {
-  return resting(b, kTableHandle, x - kKaplaLength / 2, x + kKaplaLength / 2, -kKaplaWidth / 2,
-                 kKaplaWidth / 2, 0.0);
-}
-
 /// A contact along the points `points` of b's face with outward `normal`.
 PairContact faceContact(BodyHandle a, BodyHandle b, std::vector<Eigen::Vector3d> points,
                         const Eigen::Vector3d& normal, double mu) {
@@ -63,6 +45,19 @@ PairContact faceContact(BodyHandle a, BodyHandle b, std::vector<Eigen::Vector3d>
   contact.points = std::move(points);
   contact.friction = mu;
   return contact;
+}
+
+/// `upper` resting on `lower` over the rectangle x0..x1, y0..y1 at height z.
+PairContact resting(BodyHandle upper, BodyHandle lower, double x0, double x1, double y0, double y1,
+                    double z) {
+  return faceContact(upper, lower, {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}},
+                     Eigen::Vector3d::UnitZ(), 0.5);
+}
+
+/// Brick b along x at (x, 0) on the table: its whole bottom face touches.
+PairContact onTable(BodyHandle b, double x) {
+  return resting(b, kTableHandle, x - kKaplaLength / 2, x + kKaplaLength / 2, -kKaplaWidth / 2,
+                 kKaplaWidth / 2, 0.0);
 }
 
 /// A V of planks b0 and b1 on the table at `theta` from vertical, their
