@@ -216,9 +216,9 @@ std::vector<int> addContactColumns(const std::vector<StaticsContact>& contacts,
   return first_column;
 }
 
-/// Where each column and row of the LP sits in a StaticsBasis: contact
-/// columns by (contact key, edge), imbalance columns by (body key, 2 row +
-/// side), rows by (body key, row).
+/// Where each column and row of the LP sits in a StaticsBasis: a
+/// contact's columns under its key, one per cone edge; a body's rows under
+/// its key, and its imbalance columns (2 row + side) under its key.
 class BasisNames {
  public:
   BasisNames(const StaticsWarmStart& warm, const EquilibriumLp& lp,
@@ -239,10 +239,12 @@ class BasisNames {
                                       static_cast<unsigned char>(ClpSimplex::atLowerBound));
     for (int r = 0; r < lp_.rowCount(); ++r)
       status[lp_.columnCount() + r] = static_cast<unsigned char>(ClpSimplex::basic);
-    visit([&](std::map<std::pair<std::uint64_t, int>, unsigned char>& names,
-              const std::pair<std::uint64_t, int>& name, int index) {
-      auto found = names.find(name);
-      if (found != names.end()) status[index] = found->second;
+    visit([&](StaticsBasis::Statuses& names, std::uint64_t key, int count, int first) {
+      auto found = names.find(key);
+      if (found == names.end()) return;
+      const std::vector<unsigned char>& kept = found->second;
+      for (int j = 0; j < count && j < static_cast<int>(kept.size()); ++j)
+        if (kept[j] != StaticsBasis::kUnknown) status[first + j] = kept[j];
     });
     return status;
   }
@@ -250,37 +252,39 @@ class BasisNames {
   /// Puts `model`'s final status under each of its names, keeping the
   /// names of other problems; past kRememberedNames the others go first.
   void keep(const ClpSimplex& model) const {
-    const StaticsBasis& basis = *warm_.basis;
-    if (basis.columns.size() + basis.rows.size() + basis.imbalance.size() > kRememberedNames)
-      *warm_.basis = StaticsBasis();
+    StaticsBasis& basis = *warm_.basis;
+    if (basis.names > kRememberedNames) basis = StaticsBasis();
     const unsigned char* status = model.statusArray();
-    visit([&](std::map<std::pair<std::uint64_t, int>, unsigned char>& names,
-              const std::pair<std::uint64_t, int>& name,
-              int index) { names[name] = status[index]; });
+    visit([&](StaticsBasis::Statuses& names, std::uint64_t key, int count, int first) {
+      std::vector<unsigned char>& kept = names[key];
+      if (static_cast<int>(kept.size()) < count) kept.resize(count, StaticsBasis::kUnknown);
+      for (int j = 0; j < count; ++j) {
+        if (kept[j] == StaticsBasis::kUnknown) ++basis.names;
+        kept[j] = status[first + j];
+      }
+    });
   }
 
   /// Forgets the basis: never start from a failure's.
   void forget() const { *warm_.basis = StaticsBasis(); }
 
  private:
+  /// Calls `names(family, key, count, first)` for each contact's and
+  /// body's run of `count` columns or rows, the first at index `first` of
+  /// Clp's status array (columns, then rows).
   template <typename Visit>
-  void visit(Visit&& name) const {
+  void visit(Visit&& names) const {
     StaticsBasis& basis = *warm_.basis;
     for (std::size_t c = 0; c < first_column_.size(); ++c) {
       if (first_column_[c] < 0) continue;
-      for (std::size_t j = 0; j < edges_[c].size(); ++j)
-        name(basis.columns, {warm_.contact_keys[c], static_cast<int>(j)},
-             first_column_[c] + static_cast<int>(j));
+      names(basis.columns, warm_.contact_keys[c], static_cast<int>(edges_[c].size()),
+            first_column_[c]);
     }
     for (std::size_t i = 0; i < bodies_; ++i) {
       const int row = lp_.rowOf(static_cast<int>(i));
       if (row < 0) continue;
-      for (int k = 0; k < 6; ++k) {
-        name(basis.rows, {warm_.body_keys[i], k}, lp_.columnCount() + row + k);
-        for (int side = 0; side < 2; ++side)
-          name(basis.imbalance, {warm_.body_keys[i], 2 * k + side},
-               first_imbalance_ + 2 * (row + k) + side);
-      }
+      names(basis.rows, warm_.body_keys[i], 6, lp_.columnCount() + row);
+      names(basis.imbalance, warm_.body_keys[i], 12, first_imbalance_ + 2 * row);
     }
   }
 

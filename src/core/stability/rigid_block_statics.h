@@ -4,8 +4,8 @@
 // Clp. Clp's types stay in the .cpp.
 
 #include <cstdint>
-#include <map>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -65,9 +65,17 @@ struct StaticsOptions {
 /// asked every tick) each start from where they last ended. Opaque to
 /// callers; kept by them between solves.
 struct StaticsBasis {
-  /// (contact key, cone edge), (body key, row 0..5), (body key, imbalance
-  /// column 0..11) -> ClpSimplex::Status.
-  std::map<std::pair<std::uint64_t, int>, unsigned char> columns, rows, imbalance;
+  /// Per key (a contact's or a body's), the status (ClpSimplex::Status) of
+  /// each of its columns or rows, by index there; kUnknown where no LP has
+  /// left one. One lookup per contact or body: a pile's LPs name tens of
+  /// thousands of columns, and a lookup per column was most of their set-up.
+  using Statuses = std::unordered_map<std::uint64_t, std::vector<unsigned char>>;
+  static constexpr unsigned char kUnknown = 0xff;
+  /// Contact key -> one status per cone edge; body key -> its rows (0..5);
+  /// body key -> its imbalance columns (0..11).
+  Statuses columns, rows, imbalance;
+  /// Statuses kept, over all three.
+  std::size_t names = 0;
 };
 
 /// Names for one problem's bodies and contacts (parallel to them), and the
