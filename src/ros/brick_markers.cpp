@@ -6,6 +6,7 @@
 #include <string>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/types/table_solid.h"
 #include "brick_stack_sim/ros/conversions.h"
 
 namespace brick_stack_sim {
@@ -278,8 +279,8 @@ visualization_msgs::MarkerArray makeTableMarkers(const TableOptions& table,
   // top seen at a grazing angle (RViz lights along the view) still stands
   // out from the background; the dark edges of the lowest layer show on it.
   const std_msgs::ColorRGBA top = rgb(0.80f, 0.80f, 0.82f);
-  box(0, Eigen::Vector3d(0.0, 0.0, -0.5 * table.thickness),
-      Eigen::Vector3d(length, width, table.thickness), top);
+  // The top is the box the world collides with (tableSolid()).
+  box(0, tablePose(table).translation(), 2.0 * tableHalfExtents(table), top);
   // The floor, wider than the table by a table's width on every side: what
   // falls off lands there (fell-off bricks, red).
   constexpr double kFloorThickness = 0.01;  // [m]
