@@ -269,22 +269,22 @@ class BasisNames {
   void forget() const { *warm_.basis = StaticsBasis(); }
 
  private:
-  /// Calls `names(family, key, count, first)` for each contact's and
+  /// Calls `each(family, key, count, first)` for each contact's and
   /// body's run of `count` columns or rows, the first at index `first` of
   /// Clp's status array (columns, then rows).
   template <typename Visit>
-  void visit(Visit&& names) const {
+  void visit(Visit&& each) const {
     StaticsBasis& basis = *warm_.basis;
     for (std::size_t c = 0; c < first_column_.size(); ++c) {
       if (first_column_[c] < 0) continue;
-      names(basis.columns, warm_.contact_keys[c], static_cast<int>(edges_[c].size()),
-            first_column_[c]);
+      each(basis.columns, warm_.contact_keys[c], static_cast<int>(edges_[c].size()),
+           first_column_[c]);
     }
     for (std::size_t i = 0; i < bodies_; ++i) {
       const int row = lp_.rowOf(static_cast<int>(i));
       if (row < 0) continue;
-      names(basis.rows, warm_.body_keys[i], 6, lp_.columnCount() + row);
-      names(basis.imbalance, warm_.body_keys[i], 12, first_imbalance_ + 2 * row);
+      each(basis.rows, warm_.body_keys[i], 6, lp_.columnCount() + row);
+      each(basis.imbalance, warm_.body_keys[i], 12, first_imbalance_ + 2 * row);
     }
   }
 
