@@ -59,7 +59,11 @@ void configureSolver(const WorldOptions& options, btContactSolverInfo* solver_in
 }  // namespace
 
 BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_options) {
-  collision_configuration = std::make_unique<btDefaultCollisionConfiguration>();
+  // The dispatcher's pool hands out blocks of the largest algorithm it knows
+  // of; ours must fit in them.
+  btDefaultCollisionConstructionInfo collision_info;
+  collision_info.m_customCollisionAlgorithmMaxElementSize = sizeof(FlushBoxBoxAlgorithm);
+  collision_configuration = std::make_unique<btDefaultCollisionConfiguration>(collision_info);
   dispatcher = std::make_unique<btCollisionDispatcher>(collision_configuration.get());
   // Bullet's default box-box path is GJK/EPA, which finds one contact point per
   // step and needs several steps to build a resting patch; a brick lying on

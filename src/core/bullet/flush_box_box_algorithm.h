@@ -23,6 +23,13 @@ namespace brick_stack_sim {
 /// (four of them, those that span the largest area, when there are more):
 /// chosen by geometry, the same every step while the boxes rest, so every
 /// point keeps its warm start. Everywhere else Bullet's detector runs.
+///
+/// A pair whose relative pose has moved less than kReuseDrift since its
+/// manifold was last detected keeps that manifold: its points ride with the
+/// two bodies (Bullet's refresh) and its normals turn with the body they face out of,
+/// the way Jolt's body pair cache replays a contact. Bricks at rest on each
+/// other are most of a pile's pairs, and their detection gives the same
+/// points step after step.
 class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
  public:
   FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
@@ -45,12 +52,31 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   bool addFlushCorners(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1,
                        btManifoldResult* result) const;
 
+  /// Whether body0 has moved less than kReuseDrift, at every point of it,
+  /// relative to body1 since the manifold was last detected.
+  bool withinReuseDrift(const btTransform& relative) const;
+
+  /// Moves the manifold's points with the bodies, as if detected again.
+  void replayManifold(btManifoldResult* result);
+
+  /// Keeps what a replay starts from once the manifold has been detected.
+  void rememberDetection(const btTransform& relative);
+
   /// The pair's manifold, which the base class owns (null when the pair
   /// needs no collision).
   btPersistentManifold* manifold_ = nullptr;
   /// The overlap of the faces, kept between steps so that a resting pair's
   /// step does not go to the heap for it.
   mutable std::vector<Eigen::Vector3d> patch_;
+  /// body0's pose in body1's frame when the manifold was last detected.
+  btTransform detected_relative_;
+  /// The basis of the manifold's body B at the last step, whose change since
+  /// turns a replayed point's normal.
+  btMatrix3x3 last_basis_b_;
+  /// Whether detected_relative_ holds a detection a replay may start from.
+  bool detected_ = false;
+  /// The distance of body0's farthest corner from its centre [m].
+  btScalar radius0_ = 0.0;
 };
 
 }  // namespace brick_stack_sim

@@ -154,7 +154,22 @@ TEST_P(LoadsInMode, AHarmonicStackPastItsCriticalOverhangsFallsAsAWhole) {
       }
       EXPECT_TRUE(report.bricks.back().brick.fell_off);
       EXPECT_GE(fell, bricks / 2);
-      EXPECT_EQ(report.cost.wake_cycles, 0u);
+      // The collapse wakes each brick once: none is woken again where it
+      // had refrozen while it is on the table. The heap the fallen bricks
+      // make on the floor is another matter, loads of bricks still settling
+      // on frozen ones (docs/benchmarks.md, "Piles left to settle"), and
+      // whether it churns turns on the last bits of the fall.
+      std::map<std::string, double> fell_off_at;
+      for (const SimEvent& e : report.events)
+        if (e.kind == SimEventKind::kFellOff) fell_off_at.emplace(e.brick_id, e.time);
+      for (const SimEvent& e : report.events) {
+        if (e.kind != SimEventKind::kWoken ||
+            e.reason.find("wake/refreeze cycle") == std::string::npos)
+          continue;
+        const auto fell_off = fell_off_at.find(e.brick_id);
+        EXPECT_TRUE(fell_off != fell_off_at.end() && fell_off->second < e.time)
+            << e.brick_id << " at " << e.time << " s: " << e.reason;
+      }
     }
   }
 }

@@ -151,9 +151,9 @@ struct Expected {
 
 // The hashes of the code as it stood when this test was written.
 const Expected kExpected[] = {
-    {"built_tower", "none", 0x6ddbc5630a73d1b2ULL},
+    {"built_tower", "none", 0xaefeef1886b738fdULL},
     {"built_tower", "com", 0x7a00383680c6e0c3ULL},
-    {"pile", "none", 0x18ec034d8c6ab15dULL},
+    {"pile", "none", 0x6e6b11394414939cULL},
     // com freezes bricks that lean on others in the pile when
     // statics balances them, as equilibrium does, so the pile now ends as there.
     // Loads that movers put on frozen bricks enter their statics, and a
@@ -168,18 +168,21 @@ const Expected kExpected[] = {
     // the models, which freeze it before anything slides. Faces that rest
     // flush given the corners of their overlap move every run in which a
     // brick lies on another in Bullet: all but the built tower in the models.
-    {"pile", "com", 0xab1c7efc0bf4a66bULL},
-    {"slant_tower", "none", 0x17cee022f54bca16ULL},
-    {"slant_tower", "com", 0x51b1d25f13729e22ULL},
-    {"remove_and_push", "none", 0x0826f7476a838fa8ULL},
-    {"remove_and_push", "com", 0xebe06081de8d854dULL},
+    // A pair that has barely moved relative to itself keeps its manifold
+    // from the step before, replayed instead of detected again: every run in
+    // which a brick rests on another in Bullet moves.
+    {"pile", "com", 0xaef9dfc4fa4c6fb4ULL},
+    {"slant_tower", "none", 0x0b0c685783108f1bULL},
+    {"slant_tower", "com", 0x17b3fe769c423b38ULL},
+    {"remove_and_push", "none", 0xcb1248951a236ed5ULL},
+    {"remove_and_push", "com", 0x747d4a73be964209ULL},
     // Mode equilibrium: a flat stack that the COM rule finds
     // stable is an equilibrium, so the built tower and the removal scene
     // end as in com.
     {"built_tower", "equilibrium", 0x7a00383680c6e0c3ULL},
-    {"pile", "equilibrium", 0xab1c7efc0bf4a66bULL},
-    {"slant_tower", "equilibrium", 0x51b1d25f13729e22ULL},
-    {"remove_and_push", "equilibrium", 0xebe06081de8d854dULL},
+    {"pile", "equilibrium", 0xaef9dfc4fa4c6fb4ULL},
+    {"slant_tower", "equilibrium", 0x17b3fe769c423b38ULL},
+    {"remove_and_push", "equilibrium", 0x747d4a73be964209ULL},
 };
 
 TEST(GoldenFingerprint, EveryModeOfEverySceneEndsBitForBitAsPinned) {
