@@ -123,7 +123,13 @@ FlushBoxBoxAlgorithm::FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructio
   getAllContactManifolds(manifolds);
   if (manifolds.size() == 1) manifold_ = manifolds[0];
   const auto* shape0 = static_cast<const btBoxShape*>(body0->getCollisionShape());
-  radius0_ = shape0->getHalfExtentsWithMargin().length();
+  const auto* shape1 = static_cast<const btBoxShape*>(body1->getCollisionShape());
+  const btScalar radius0 = shape0->getHalfExtentsWithMargin().length();
+  const btScalar radius1 = shape1->getHalfExtentsWithMargin().length();
+  // The drift is measured on the smaller box, in the larger one's frame: a
+  // plank's turn on the table moves its own corners, not the table's.
+  smaller_is_body0_ = radius0 <= radius1;
+  smaller_radius_ = std::min(radius0, radius1);
 }
 
 void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
@@ -131,7 +137,10 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
                                             const btDispatcherInfo& info,
                                             btManifoldResult* result) {
   if (!manifold_) return;  // as the base class: the pair needs no collision
-  const btTransform relative = body1->getWorldTransform().inverseTimes(body0->getWorldTransform());
+  const btTransform& transform0 = body0->getWorldTransform();
+  const btTransform& transform1 = body1->getWorldTransform();
+  const btTransform relative =
+      smaller_is_body0_ ? transform1.inverseTimes(transform0) : transform0.inverseTimes(transform1);
   if (detected_ && withinReuseDrift(relative)) {
     replayManifold(result);
     return;
@@ -143,7 +152,7 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
 
 bool FlushBoxBoxAlgorithm::withinReuseDrift(const btTransform& relative) const {
   const btScalar moved = (relative.getOrigin() - detected_relative_.getOrigin()).length();
-  // A point at distance r from body0's centre moved by at most
+  // A point at distance r from the smaller box's centre moved by at most
   // r |R - R0|, and the spectral norm is below the Frobenius norm,
   // |R - R0|_F^2 = 2 (3 - tr(R0^T R)).
   const btMatrix3x3& now = relative.getBasis();
@@ -151,7 +160,7 @@ bool FlushBoxBoxAlgorithm::withinReuseDrift(const btTransform& relative) const {
   btScalar trace = 0.0;
   for (int i = 0; i < 3; ++i) trace += now[i].dot(then[i]);
   const btScalar turned = std::sqrt(std::max(btScalar(0.0), 2.0 * (3.0 - trace)));
-  return moved + turned * radius0_ < kReuseDrift;
+  return moved + turned * smaller_radius_ < kReuseDrift;
 }
 
 void FlushBoxBoxAlgorithm::replayManifold(btManifoldResult* result) {

@@ -52,8 +52,9 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   bool addFlushCorners(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1,
                        btManifoldResult* result) const;
 
-  /// Whether body0 has moved less than kReuseDrift, at every point of it,
-  /// relative to body1 since the manifold was last detected.
+  /// Whether the smaller box has moved less than kReuseDrift, at every
+  /// point of it, relative to the larger since the manifold was last
+  /// detected; `relative` is its pose in the larger one's frame.
   bool withinReuseDrift(const btTransform& relative) const;
 
   /// Moves the manifold's points with the bodies, as if detected again.
@@ -68,15 +69,19 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   /// The overlap of the faces, kept between steps so that a resting pair's
   /// step does not go to the heap for it.
   mutable std::vector<Eigen::Vector3d> patch_;
-  /// body0's pose in body1's frame when the manifold was last detected.
+  /// The smaller box's pose in the larger one's frame when the manifold was
+  /// last detected.
   btTransform detected_relative_;
   /// The basis of the manifold's body B at the last step, whose change since
   /// turns a replayed point's normal.
   btMatrix3x3 last_basis_b_;
   /// Whether detected_relative_ holds a detection a replay may start from.
   bool detected_ = false;
-  /// The distance of body0's farthest corner from its centre [m].
-  btScalar radius0_ = 0.0;
+  /// Whether body0 is the smaller box (by the distance of its corners from
+  /// its centre), whose drift is measured.
+  bool smaller_is_body0_ = true;
+  /// The distance of the smaller box's corners from its centre [m].
+  btScalar smaller_radius_ = 0.0;
 };
 
 }  // namespace brick_stack_sim
