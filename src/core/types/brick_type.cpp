@@ -16,8 +16,10 @@ bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; 
 /// A box of `size` centred on the type frame, as every type was before
 /// shapes: its inertia keeps the closed form's bits.
 bool isCentredBox(const BrickShape& shape) {
+  // Compared whole rather than by isIdentity(): the stability stage asks this
+  // of every mover each step, and Eigen's element loop was most of the cost.
   return shape.kind == ShapeKind::kBox && shape.parts.size() == 1 &&
-         shape.parts[0].pose.matrix().isIdentity(0.0);
+         shape.parts[0].pose.matrix() == Eigen::Matrix4d::Identity();
 }
 
 /// Principal moments and axes (a proper rotation) of a symmetric tensor; a

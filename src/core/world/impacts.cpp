@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
+#include "brick_stack_sim/core/geometry/convex_solid.h"
 #include "util/text_format.h"
 #include "world/placement_check.h"
 #include "world/world_state.h"
@@ -141,22 +142,31 @@ double firstContactOnTheWay(const WorldState& w, const Striker& striker,
 
 bool findImpact(const WorldState& w, const Striker& striker, BodyHandle struck, Impact* impact,
                 double* overlap) {
+  const BrickType& striker_type = w.bricks.find(striker.handle)->type;
+  const PlacedSolid struck_box = w.solidOf(struck);
+  const PlacedSolid striker_box = striker_type.placed(striker.pose);
+  // The separating axes bound the distance from below at a fraction of
+  // GJK's cost: on a landing pile two in three pairs brought here are apart
+  // beyond the contact distance, and no blow passes between those (with
+  // GJK's tolerance, so that none it would have found is skipped).
+  if (separation(striker_box, struck_box) >
+      w.options.stability.contact_distance + kDistanceTolerance) {
+    if (overlap) *overlap = 0.0;
+    return false;
+  }
   ClosestPoints nearest;
   if (!w.scene.closestPoints(striker.handle, striker.pose, struck, &nearest)) return false;
   // GJK's witness of two flush faces is any corner of their overlap; the
   // blow acts nearer the striker's centre, on the struck brick's surface.
-  const BrickType& striker_type = w.bricks.find(striker.handle)->type;
   const Eigen::Vector3d centre = centreOfMassAt(striker_type, striker.pose);
   const Eigen::Vector3d on_plane =
       centre - (centre - nearest.on_b).dot(nearest.normal) * nearest.normal;
-  const PlacedSolid struck_box = w.solidOf(struck);
   const Eigen::Vector3d point = nearestPointIn(struck_box, on_plane);
   const Eigen::Vector3d velocity = striker.velocity + striker.spin.cross(point - centre);
   const double closing_speed = -velocity.dot(nearest.normal);
   if (overlap) *overlap = std::max(0.0, -nearest.distance);
   if (closing_speed <= w.options.stability.impact_speed) return false;
   if (nearest.distance > w.options.stability.contact_distance) return false;
-  const PlacedSolid striker_box = striker_type.placed(striker.pose);
   if (overlapAcross(striker_box, struck_box, nearest.normal) < kGrazeOverlap) return false;
   impact->striker = striker.handle;
   impact->striker_mass = striker.mass;
