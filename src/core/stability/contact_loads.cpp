@@ -28,17 +28,27 @@ constexpr std::size_t kWindowOnStack = 64;
 
 }  // namespace
 
+ContactLoads::Window& ContactLoads::windowOf(BodyHandle brick, BodyHandle source) {
+  Sources& sources = by_brick_[brick];
+  auto it = std::lower_bound(
+      sources.begin(), sources.end(), source,
+      [](const std::pair<BodyHandle, Window>& entry, BodyHandle key) { return entry.first < key; });
+  if (it == sources.end() || it->first != source) it = sources.insert(it, {source, Window{}});
+  return it->second;
+}
+
 void ContactLoads::record(const std::vector<PairContact>& contacts, double dt, int window,
                           double force_scale, const BodyTest& measured, const BodyTest& source) {
   if (!(dt > 0.0)) return;
   const std::size_t steps = static_cast<std::size_t>(std::max(window, 1));
-  for (auto& entry : windows_) entry.second.seen = false;
+  for (auto& [brick, sources] : by_brick_)
+    for (auto& entry : sources) entry.second.seen = false;
   for (const PairContact& pair : contacts) {
     for (const auto& [brick, other] : {std::pair{pair.a, pair.b}, std::pair{pair.b, pair.a}}) {
       if (isGround(brick) || isGround(other) || !measured(brick) || !source(other)) continue;
       forcesOn(brick, pair, dt, force_scale, &step_forces_);
       if (step_forces_.empty()) continue;
-      Window& w = windows_[{brick, other}];
+      Window& w = windowOf(brick, other);
       if (w.steps.size() != steps) w = Window{std::vector<Sample>(steps), 0, 0, false};
       Sample& now = w.steps[w.next];
       if (w.seen) {  // a second manifold of the same pair
@@ -53,17 +63,23 @@ void ContactLoads::record(const std::vector<PairContact>& contacts, double dt, i
       now.magnitude = total.norm();
     }
   }
-  for (auto it = windows_.begin(); it != windows_.end();) {
-    Window& w = it->second;
-    Sample& now = w.steps[w.next];
-    if (!w.seen && !now.forces.empty()) {
-      now.forces.clear();
-      now.magnitude = 0.0;
-      --w.touching;
+  for (auto it = by_brick_.begin(); it != by_brick_.end();) {
+    Sources& sources = it->second;
+    for (auto& entry : sources) {
+      Window& w = entry.second;
+      Sample& now = w.steps[w.next];
+      if (!w.seen && !now.forces.empty()) {
+        now.forces.clear();
+        now.magnitude = 0.0;
+        --w.touching;
+      }
+      w.next = (w.next + 1) % w.steps.size();
     }
-    w.next = (w.next + 1) % w.steps.size();
-    touched_.push_back(it->first.first);
-    it = w.touching == 0 ? windows_.erase(it) : std::next(it);
+    touched_.push_back(it->first);
+    sources.erase(std::remove_if(sources.begin(), sources.end(),
+                                 [](const auto& entry) { return entry.second.touching == 0; }),
+                  sources.end());
+    it = sources.empty() ? by_brick_.erase(it) : std::next(it);
   }
 }
 
@@ -81,10 +97,11 @@ const ContactLoads::Sample* ContactLoads::median(const Window& window) {
 
 std::vector<PointForce> ContactLoads::on(BodyHandle brick, const BodyTest& counts) const {
   std::vector<PointForce> loads;
-  for (auto it = windows_.lower_bound({brick, 0}); it != windows_.end() && it->first.first == brick;
-       ++it) {
-    if (counts && !counts(it->first.second)) continue;
-    if (const Sample* sample = median(it->second))
+  const auto found = by_brick_.find(brick);
+  if (found == by_brick_.end()) return loads;
+  for (const auto& [source, window] : found->second) {
+    if (counts && !counts(source)) continue;
+    if (const Sample* sample = median(window))
       loads.insert(loads.end(), sample->forces.begin(), sample->forces.end());
   }
   return loads;
@@ -103,10 +120,18 @@ void ContactLoads::forget(BodyHandle body) { forgetWhere(body, true); }
 void ContactLoads::forgetSource(BodyHandle body) { forgetWhere(body, false); }
 
 void ContactLoads::forgetWhere(BodyHandle body, bool as_loaded_brick) {
-  for (auto it = windows_.begin(); it != windows_.end();) {
-    const bool involved = it->first.second == body || (as_loaded_brick && it->first.first == body);
-    if (involved) touched_.push_back(it->first.first);
-    it = involved ? windows_.erase(it) : std::next(it);
+  for (auto it = by_brick_.begin(); it != by_brick_.end();) {
+    Sources& sources = it->second;
+    const std::size_t before = sources.size();
+    if (as_loaded_brick && it->first == body) {
+      sources.clear();
+    } else {
+      sources.erase(std::remove_if(sources.begin(), sources.end(),
+                                   [body](const auto& entry) { return entry.first == body; }),
+                    sources.end());
+    }
+    if (sources.size() != before) touched_.push_back(it->first);
+    it = sources.empty() ? by_brick_.erase(it) : std::next(it);
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 
 #include <functional>
-#include <map>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "physics/contact.h"
@@ -45,7 +46,7 @@ class ContactLoads {
   /// passes through the stack.
   void forgetSource(BodyHandle body);
   /// Whether any load is being measured.
-  bool empty() const { return windows_.empty(); }
+  bool empty() const { return by_brick_.empty(); }
 
  private:
   /// One step of one pair: the source's forces on the brick.
@@ -67,10 +68,15 @@ class ContactLoads {
   /// half of its steps.
   static const Sample* median(const Window& window);
 
+  /// The window of (brick, source), made when there is none.
+  Window& windowOf(BodyHandle brick, BodyHandle source);
   void forgetWhere(BodyHandle body, bool as_loaded_brick);
 
-  /// (loaded brick, source) -> its window.
-  std::map<std::pair<BodyHandle, BodyHandle>, Window> windows_;
+  /// A loaded brick's sources, each with its window, in the order of their
+  /// handles (on() sums their loads in that order). A brick has a few
+  /// sources; a pile has thousands of pairs, looked up every step.
+  using Sources = std::vector<std::pair<BodyHandle, Window>>;
+  std::unordered_map<BodyHandle, Sources> by_brick_;
   std::vector<BodyHandle> touched_;
   std::vector<PointForce> step_forces_;  ///< record()'s, kept for its storage.
 };
