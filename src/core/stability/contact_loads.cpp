@@ -41,8 +41,6 @@ void ContactLoads::record(const std::vector<PairContact>& contacts, double dt, i
                           double force_scale, const BodyTest& measured, const BodyTest& source) {
   if (!(dt > 0.0)) return;
   const std::size_t steps = static_cast<std::size_t>(std::max(window, 1));
-  for (auto& [brick, sources] : by_brick_)
-    for (auto& entry : sources) entry.second.seen = false;
   for (const PairContact& pair : contacts) {
     for (const auto& [brick, other] : {std::pair{pair.a, pair.b}, std::pair{pair.b, pair.a}}) {
       if (isGround(brick) || isGround(other) || !measured(brick) || !source(other)) continue;
@@ -73,6 +71,7 @@ void ContactLoads::record(const std::vector<PairContact>& contacts, double dt, i
         now.magnitude = 0.0;
         --w.touching;
       }
+      w.seen = false;  // for the next step, without a walk of its own
       w.next = (w.next + 1) % w.steps.size();
     }
     touched_.push_back(it->first);

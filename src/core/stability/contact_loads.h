@@ -61,7 +61,7 @@ class ContactLoads {
     std::vector<Sample> steps;
     std::size_t next = 0;
     std::size_t touching = 0;  ///< Steps with forces; none: the pair is forgotten.
-    bool seen = false;         ///< In this step's contacts.
+    bool seen = false;         ///< In this step's contacts; cleared as the step ends.
   };
 
   /// The median step of `window`; null when the pair touched in fewer than
