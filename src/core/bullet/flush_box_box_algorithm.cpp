@@ -141,7 +141,10 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
   const btTransform& transform1 = body1->getWorldTransform();
   const btTransform relative =
       smaller_is_body0_ ? transform1.inverseTimes(transform0) : transform0.inverseTimes(transform1);
-  if (detected_ && withinReuseDrift(relative)) {
+  // An empty manifold is detected again, never replayed: a contact the
+  // drift made is found at once, and what an empty pair gives depends on
+  // its poses alone.
+  if (detected_ && manifold_->getNumContacts() > 0 && withinReuseDrift(relative)) {
     replayManifold(result);
     return;
   }

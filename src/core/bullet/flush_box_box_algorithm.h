@@ -24,8 +24,8 @@ namespace brick_stack_sim {
 /// chosen by geometry, the same every step while the boxes rest, so every
 /// point keeps its warm start. Everywhere else Bullet's detector runs.
 ///
-/// A pair whose relative pose has moved less than kReuseDrift since its
-/// manifold was last detected keeps that manifold: its points ride with the
+/// A pair with points whose relative pose has moved less than kReuseDrift
+/// since its manifold was last detected keeps that manifold: its points ride with the
 /// two bodies (Bullet's refresh) and its normals turn with the body they face out of,
 /// the way Jolt's body pair cache replays a contact. Bricks at rest on each
 /// other are most of a pile's pairs, and their detection gives the same
