@@ -64,7 +64,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   btDefaultCollisionConstructionInfo collision_info;
   collision_info.m_customCollisionAlgorithmMaxElementSize = sizeof(FlushBoxBoxAlgorithm);
   collision_configuration = std::make_unique<btDefaultCollisionConfiguration>(collision_info);
-  dispatcher = std::make_unique<btCollisionDispatcher>(collision_configuration.get());
+  dispatcher = std::make_unique<ApartPairDispatcher>(collision_configuration.get());
   // Bullet's default box-box path is GJK/EPA, which finds one contact point per
   // step and needs several steps to build a resting patch; a brick lying on
   // another wobbles meanwhile. The box-box clipper returns the whole face patch
@@ -76,6 +76,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   solver = std::make_unique<ConeFrictionSolver>();
   world = std::make_unique<BrickDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                                collision_configuration.get());
+  dispatcher->watch(world.get());
   world->setGravity(btVector3(0, 0, -options.gravity));
   // Bodies at rest keep their AABB; recomputing every static brick's box each
   // step dominated the cost of large settled scenes.
@@ -423,5 +424,11 @@ BulletStageSeconds BulletScene::lastStepStageSeconds() const {
 }
 
 const btCollisionDispatcher& BulletScene::dispatcher() const { return *impl_->dispatcher; }
+
+void BulletScene::passOverApartPairs(bool enabled) {
+  impl_->dispatcher->watch(enabled ? impl_->world.get() : nullptr);
+}
+
+std::uint64_t BulletScene::apartPairsPassedOver() const { return impl_->dispatcher->passedOver(); }
 
 }  // namespace brick_stack_sim

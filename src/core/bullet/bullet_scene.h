@@ -138,6 +138,13 @@ class BulletScene {
   /// The contact manifolds of the last step, for the contact reader.
   const btCollisionDispatcher& dispatcher() const;
 
+  /// Whether the narrowphase passes over pairs still too far apart to touch
+  /// (ApartPairDispatcher; on from the start). Either way the steps give
+  /// the same bits; off, every pair is tested at every step, to compare.
+  void passOverApartPairs(bool enabled);
+  /// Pair visits the narrowphase passed over so far.
+  std::uint64_t apartPairsPassedOver() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

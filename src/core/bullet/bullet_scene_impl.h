@@ -10,6 +10,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "bullet/apart_pair_dispatcher.h"
 #include "bullet/brick_dynamics_world.h"
 #include "bullet/bullet_conversions.h"
 #include "bullet/bullet_scene.h"
@@ -29,7 +30,7 @@ struct BulletScene::Impl {
   WorldOptions options;
   // Declaration order is destruction order in reverse: the world goes first.
   std::unique_ptr<btDefaultCollisionConfiguration> collision_configuration;
-  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<ApartPairDispatcher> dispatcher;
   std::unique_ptr<btCollisionAlgorithmCreateFunc> box_box_algorithm;
   std::unique_ptr<btBroadphaseInterface> broadphase;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver;

@@ -31,6 +31,9 @@ constexpr double kFlushGap = 1e-4;
 /// speeds, anything landing or sliding more in one.
 constexpr double kReuseDrift = 1e-5;
 
+/// What a separating-axis gap is trusted to [m], far above its rounding.
+constexpr double kGapTolerance = 1e-9;
+
 /// Whether a face of one box may lie within kFlushAngle of parallel to a
 /// face of the other. The cosine between two face normals is an entry of
 /// the boxes' relative rotation (up to sign), so when every entry is below
@@ -130,6 +133,7 @@ FlushBoxBoxAlgorithm::FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructio
   // plank's turn on the table moves its own corners, not the table's.
   smaller_is_body0_ = radius0 <= radius1;
   smaller_radius_ = std::min(radius0, radius1);
+  apart_ = dynamic_cast<ApartPairDispatcher*>(info.m_dispatcher1);
 }
 
 void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
@@ -143,14 +147,25 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
       smaller_is_body0_ ? transform1.inverseTimes(transform0) : transform0.inverseTimes(transform1);
   // An empty manifold is detected again, never replayed: a contact the
   // drift made is found at once, and what an empty pair gives depends on
-  // its poses alone.
+  // its poses alone, so passing it over while it is apart changes nothing.
   if (detected_ && manifold_->getNumContacts() > 0 && withinReuseDrift(relative)) {
     replayManifold(result);
-    return;
+  } else {
+    if (!addFlushCorners(*body0, *body1, result))
+      btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
+    rememberDetection(relative);
   }
-  if (!addFlushCorners(*body0, *body1, result))
-    btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
-  rememberDetection(relative);
+  offerGap(*body0, *body1);
+}
+
+void FlushBoxBoxAlgorithm::offerGap(const btCollisionObjectWrapper& body0,
+                                    const btCollisionObjectWrapper& body1) {
+  if (!apart_ || manifold_->getNumContacts() > 0) return;
+  // Bullet's detector makes points only where the boxes overlap, the flush
+  // corners only within the breaking threshold; the separating-axis gap is
+  // a lower bound of the distance.
+  const double gap = separation(orientedBox(body0), orientedBox(body1));
+  apart_->keepApart(gap - manifold_->getContactBreakingThreshold() - kGapTolerance);
 }
 
 bool FlushBoxBoxAlgorithm::withinReuseDrift(const btTransform& relative) const {

@@ -6,6 +6,8 @@
 #include <btBulletCollisionCommon.h>
 #include <Eigen/Core>
 
+#include "bullet/apart_pair_dispatcher.h"
+
 namespace brick_stack_sim {
 
 /// Bullet's box-box narrowphase, with faces that rest flush given the
@@ -30,6 +32,11 @@ namespace brick_stack_sim {
 /// the way Jolt's body pair cache replays a contact. Bricks at rest on each
 /// other are most of a pile's pairs, and their detection gives the same
 /// points step after step.
+///
+/// A pair left with no point whose boxes are apart beyond the distance at
+/// which a point can be made gives that excess to an ApartPairDispatcher
+/// (when it is the dispatcher), which passes the pair over until its bodies
+/// could have closed it.
 class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
  public:
   FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
@@ -63,6 +70,10 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   /// Keeps what a replay starts from once the manifold has been detected.
   void rememberDetection(const btTransform& relative);
 
+  /// With no point, tells the dispatcher how far apart beyond reach the
+  /// boxes are.
+  void offerGap(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1);
+
   /// The pair's manifold, which the base class owns (null when the pair
   /// needs no collision).
   btPersistentManifold* manifold_ = nullptr;
@@ -82,6 +93,8 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   bool smaller_is_body0_ = true;
   /// The distance of the smaller box's corners from its centre [m].
   btScalar smaller_radius_ = 0.0;
+  /// The dispatcher that passes apart pairs over; null for any other.
+  ApartPairDispatcher* apart_ = nullptr;
 };
 
 }  // namespace brick_stack_sim
