@@ -88,6 +88,21 @@ inline BrickPlacement placement(const std::string& id, const Eigen::Vector3d& po
   return p;
 }
 
+/// The pose at `position` [m] turned by `rotation`.
+inline Eigen::Isometry3d pose(const Eigen::Vector3d& position, const Eigen::AngleAxisd& rotation) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.translation() = position;
+  p.linear() = rotation.toRotationMatrix();
+  return p;
+}
+
+/// A KAPLA at rest at `at`.
+inline BrickPlacement placement(const std::string& id, const Eigen::Isometry3d& at) {
+  BrickPlacement p = placement(id, Eigen::Vector3d::Zero());
+  p.pose = at;
+  return p;
+}
+
 /// Centre and yaw of a brick of a two-per-layer tower.
 struct TowerSlot {
   double x, y, z;  ///< [m]

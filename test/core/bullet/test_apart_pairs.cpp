@@ -26,18 +26,7 @@ WorldOptions options() {
   return o;
 }
 
-Eigen::Isometry3d pose(const Eigen::Vector3d& position, const Eigen::AngleAxisd& rotation) {
-  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
-  p.translation() = position;
-  p.linear() = rotation.toRotationMatrix();
-  return p;
-}
-
-BrickPlacement placed(const std::string& id, const Eigen::Isometry3d& at) {
-  BrickPlacement p = test::placement(id, Eigen::Vector3d::Zero());
-  p.pose = at;
-  return p;
-}
+using test::pose;
 
 std::uint64_t passedOver(const BulletScene& scene) { return scene.apartPairsPassedOver(); }
 
@@ -54,7 +43,8 @@ void addHeap(BulletScene* scene, const BrickType& kapla, int count) {
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(x, y, z);
     at.linear() = turn;
-    scene->addBrick(static_cast<BodyHandle>(i), kapla, placed("b" + std::to_string(i), at));
+    scene->addBrick(static_cast<BodyHandle>(i), kapla,
+                    test::placement("b" + std::to_string(i), at));
   }
 }
 
@@ -90,9 +80,9 @@ class HeldApart : public ::testing::Test {
  protected:
   static constexpr BodyHandle kLower = 0, kUpper = 1;
   void SetUp() override {
-    scene_.addBrick(kLower, kapla_, placed("lower", lower_));
+    scene_.addBrick(kLower, kapla_, test::placement("lower", lower_));
     scene_.makeKinematic(kLower);
-    scene_.addBrick(kUpper, kapla_, placed("upper", apart()));
+    scene_.addBrick(kUpper, kapla_, test::placement("upper", apart()));
     for (int i = 0; i < 5; ++i) hold(apart());
     ASSERT_GT(passedOver(scene_), 0u);
   }

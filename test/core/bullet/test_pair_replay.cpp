@@ -21,6 +21,7 @@ namespace {
 
 using test::kKaplaThickness;
 using test::kKaplaWidth;
+using test::pose;
 
 constexpr BodyHandle kLower = 0, kUpper = 1;
 
@@ -29,9 +30,9 @@ constexpr BodyHandle kLower = 0, kUpper = 1;
 class PlankPair {
  public:
   PlankPair(const Eigen::Isometry3d& upper, const Eigen::Isometry3d& lower) : scene_(options()) {
-    scene_.addBrick(kLower, kapla_, placed("lower", lower));
+    scene_.addBrick(kLower, kapla_, test::placement("lower", lower));
     scene_.makeKinematic(kLower);
-    scene_.addBrick(kUpper, kapla_, placed("upper", upper));
+    scene_.addBrick(kUpper, kapla_, test::placement("upper", upper));
   }
 
   /// Puts both planks at these poses and steps once: the contact read is
@@ -66,22 +67,10 @@ class PlankPair {
     o.sleeping.enabled = false;
     return o;
   }
-  static BrickPlacement placed(const std::string& id, const Eigen::Isometry3d& pose) {
-    BrickPlacement p = test::placement(id, Eigen::Vector3d::Zero());
-    p.pose = pose;
-    return p;
-  }
 
   const BrickType kapla_ = *test::packageTypes().find("kapla");
   BulletScene scene_;
 };
-
-Eigen::Isometry3d pose(const Eigen::Vector3d& position, const Eigen::AngleAxisd& rotation) {
-  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
-  p.translation() = position;
-  p.linear() = rotation.toRotationMatrix();
-  return p;
-}
 
 /// Every point of `expected` has a point in `actual` at the same place, with
 /// the same normal and depth, and no point is left over.
