@@ -1,9 +1,11 @@
 #include "bullet/apart_pair_dispatcher.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
+
+#include "bullet/turn_bound.h"
 
 namespace brick_stack_sim {
 
@@ -24,17 +26,13 @@ void setThreshold(btBroadphasePair* pair, btScalar threshold) {
 }
 
 /// How far a point within `radius` [m] of a body's origin can have moved
-/// from pose `from` to `to` [m]: the translation plus the turn's
-/// |R - R0|_F = sqrt(2 (3 - tr(R0^T R))) (above the spectral norm) times the
-/// radius. A pose that did not change moved nothing, whatever the radius
-/// (the floor's plane has no finite one).
+/// from pose `from` to `to` [m]: the translation plus the turn's bound
+/// times the radius. A pose that did not change moved nothing, whatever the
+/// radius (the floor's plane has no finite one).
 btScalar farthestMove(const btTransform& from, const btTransform& to, btScalar radius) {
   const btScalar moved = (to.getOrigin() - from.getOrigin()).length();
   if (to.getBasis() == from.getBasis()) return moved;
-  btScalar trace = 0;
-  for (int i = 0; i < 3; ++i) trace += to.getBasis()[i].dot(from.getBasis()[i]);
-  const btScalar turned = std::sqrt(std::max(btScalar(0), 2 * (3 - trace)));
-  return moved + turned * radius;
+  return moved + turnBound(to.getBasis(), from.getBasis()) * radius;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "brick_stack_sim/core/geometry/box_geometry.h"
 #include "bullet/bullet_conversions.h"
+#include "bullet/turn_bound.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -170,14 +171,7 @@ void FlushBoxBoxAlgorithm::offerGap(const btCollisionObjectWrapper& body0,
 
 bool FlushBoxBoxAlgorithm::withinReuseDrift(const btTransform& relative) const {
   const btScalar moved = (relative.getOrigin() - detected_relative_.getOrigin()).length();
-  // A point at distance r from the smaller box's centre moved by at most
-  // r |R - R0|, and the spectral norm is below the Frobenius norm,
-  // |R - R0|_F^2 = 2 (3 - tr(R0^T R)).
-  const btMatrix3x3& now = relative.getBasis();
-  const btMatrix3x3& then = detected_relative_.getBasis();
-  btScalar trace = 0.0;
-  for (int i = 0; i < 3; ++i) trace += now[i].dot(then[i]);
-  const btScalar turned = std::sqrt(std::max(btScalar(0.0), 2.0 * (3.0 - trace)));
+  const btScalar turned = turnBound(relative.getBasis(), detected_relative_.getBasis());
   return moved + turned * smaller_radius_ < kReuseDrift;
 }
 
