@@ -21,6 +21,12 @@ constexpr int kEventQueueSize = 10000;
 /// Wall time [s] between two sends of the resting bricks on /tf_static: each
 /// is the whole set, and only listeners that join later need it.
 constexpr double kStaticTransformsPeriod = 1.0;
+/// ~bricks messages queued per subscriber before the oldest is dropped. Each
+/// full array is every brick (2 MB at 10 000), so few are kept; a delta is a
+/// few changed bricks, and one dropped leaves its subscriber stale until it
+/// subscribes again, so 10 s at the default publish_rate are kept.
+constexpr int kFullBricksQueueSize = 10;
+constexpr int kDeltaBricksQueueSize = 300;
 
 }  // namespace
 
@@ -38,7 +44,8 @@ StatePublisher::StatePublisher(ros::NodeHandle& node_handle, const PublishOption
   // not start otherwise, and a viewer that connects while nothing changes
   // (paused, or a fully frozen stack) would wait for the next change.
   bricks_publisher_ = node_handle.advertise<BrickArray>(
-      kBricksTopic, 10, [this](const ros::SingleSubscriberPublisher& s) { onBricksSubscriber(s); });
+      kBricksTopic, options.bricks_delta ? kDeltaBricksQueueSize : kFullBricksQueueSize,
+      [this](const ros::SingleSubscriberPublisher& s) { onBricksSubscriber(s); });
   events_publisher_ = node_handle.advertise<StabilityEvent>(kEventsTopic, kEventQueueSize);
   markers_publisher_ = node_handle.advertise<visualization_msgs::MarkerArray>(
       kMarkersTopic, 2,
