@@ -106,6 +106,15 @@ std::vector<PointForce> ContactLoads::on(BodyHandle brick, const BodyTest& count
   return loads;
 }
 
+std::vector<BodyHandle> ContactLoads::sourcesOn(BodyHandle brick) const {
+  std::vector<BodyHandle> sources;
+  const auto found = by_brick_.find(brick);
+  if (found == by_brick_.end()) return sources;
+  for (const auto& [source, window] : found->second)
+    if (median(window)) sources.push_back(source);
+  return sources;
+}
+
 std::vector<BodyHandle> ContactLoads::takeTouched() {
   std::sort(touched_.begin(), touched_.end());
   touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());

@@ -36,6 +36,8 @@ class ContactLoads {
   /// world. Empty when none counts. With `counts`, only the sources for
   /// which it holds.
   std::vector<PointForce> on(BodyHandle brick, const BodyTest& counts = nullptr) const;
+  /// The sources whose loads on `brick` count now, in handle order.
+  std::vector<BodyHandle> sourcesOn(BodyHandle brick) const;
   /// Bricks whose loads may differ from what on() said before the last
   /// record() or forget(); forgets the list.
   std::vector<BodyHandle> takeTouched();

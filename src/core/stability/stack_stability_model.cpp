@@ -117,7 +117,7 @@ void StackStabilityModel::decide(const StabilityInput& input, StabilityDecisions
   if (input.dt > 0.0 && input.contacts) measureLoads(input);
   advanceMovers(input, decisions);
   applyLoads();
-  if (!input.more_to_come) settle(&graph_, &rest_, decisions);
+  if (!input.more_to_come) settle(&graph_, &rest_, decisions, input.contacts ? &input : nullptr);
 }
 
 bool StackStabilityModel::wokenInPlace(const BodyMotion& body) const {
@@ -329,17 +329,66 @@ void StackStabilityModel::wakeWithLoad(const WakeDecision& first, SupportGraph* 
 }
 
 void StackStabilityModel::settle(SupportGraph* graph, RestTracker* rest,
-                                 StabilityDecisions* decisions) const {
+                                 StabilityDecisions* decisions, const StabilityInput* input) const {
   // Each round wakes at least one brick or finds nothing: it ends.
   while (graph->hasChanges()) {
     std::vector<WakeDecision> unstable;
     for (const std::vector<BodyHandle>& component : graph->takeChangedComponents()) {
       if (component.empty()) continue;
       std::vector<WakeDecision> found = criterion_->check(graph, component);
+      if (!found.empty() && input && standsWithSourcesAtRest(graph, component, *input)) continue;
       unstable.insert(unstable.end(), found.begin(), found.end());
     }
     for (const WakeDecision& decision : unstable) wakeWithLoad(decision, graph, rest, decisions);
   }
+}
+
+bool StackStabilityModel::standsWithSourcesAtRest(SupportGraph* graph,
+                                                  const std::vector<BodyHandle>& component,
+                                                  const StabilityInput& input) const {
+  std::vector<BodyHandle> sources;
+  for (BodyHandle brick : component)
+    for (BodyHandle source : loads_.sourcesOn(brick))
+      if (!moves(source) && !graph->contains(source)) sources.push_back(source);
+  if (sources.empty()) return false;
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  std::vector<BodyMotion> bodies;
+  for (BodyHandle source : sources) {
+    const auto body = std::find_if(input.movers.begin(), input.movers.end(),
+                                   [&](const BodyMotion& mover) { return mover.handle == source; });
+    if (body == input.movers.end()) return false;
+    bodies.push_back(*body);
+  }
+  // Each is loaded by every source outside the group, at rest or not: it
+  // carries what rests on it into the component.
+  const ContactLoads::BodyTest outside = [&](BodyHandle source) {
+    return !std::binary_search(sources.begin(), sources.end(), source);
+  };
+  const ContactIndex index(input.contacts);
+  std::vector<BrickStability> stability;
+  if (!evaluateGroup(bodies, index, &outside, &stability)) return false;
+  SupportGraph what_if = graph->componentsOf(component);
+  unloadJoiners(&what_if, sources);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const bool leaning =
+        std::any_of(stability[i].side_contacts.begin(), stability[i].side_contacts.end(),
+                    [&](const SupportPatch& patch) { return leansOn(patch, options_); });
+    join(&what_if, bodies[i], leaning, stability[i], options_);
+  }
+  // Only the component's bricks are asked about: a brick at rest that
+  // cannot stay is the engine's to move, and moves nothing frozen here
+  // unless the check names it too.
+  for (const WakeDecision& woken : criterion_->check(&what_if, what_if.bricks()))
+    if (!std::binary_search(sources.begin(), sources.end(), woken.brick)) return false;
+  // What the markers show of it: the check that holds, its measured loads kept.
+  for (BodyHandle brick : component) {
+    BrickStability& stability = graph->find(brick)->stability;
+    std::vector<PointForce> loads = std::move(stability.external_loads);
+    stability = what_if.find(brick)->stability;
+    stability.external_loads = std::move(loads);
+  }
+  return true;
 }
 
 bool StackStabilityModel::describe(BodyHandle brick, BrickStability* stability) const {

@@ -139,8 +139,20 @@ class StackStabilityModel : public StabilityModel {
   /// starts each over as a mover.
   void wakeWithLoad(const WakeDecision& first, SupportGraph* graph, RestTracker* rest,
                     StabilityDecisions* decisions) const;
-  /// Judges the changed components of `graph` until nothing changes.
-  void settle(SupportGraph* graph, RestTracker* rest, StabilityDecisions* decisions) const;
+  /// Judges the changed components of `graph` until nothing changes. With
+  /// `input` (the step's, `graph` being the model's own), a component the
+  /// criterion would wake is asked again with the bricks at rest on it
+  /// (standsWithSourcesAtRest).
+  void settle(SupportGraph* graph, RestTracker* rest, StabilityDecisions* decisions,
+              const StabilityInput* input = nullptr) const;
+  /// Whether `component` of `graph` (the model's), with the movers at rest that
+  /// press on it joined as free bodies on their contacts (instead of their
+  /// measured loads), leaves every brick of it standing; then the stability
+  /// the check found is left on its bricks. What bricks at rest press on a
+  /// frozen one is statically indeterminate where they also rest elsewhere:
+  /// the engine's split of it is one of many, and it jitters.
+  bool standsWithSourcesAtRest(SupportGraph* graph, const std::vector<BodyHandle>& component,
+                               const StabilityInput& input) const;
 
   StabilityOptions options_;
   BodyNamer name_of_;

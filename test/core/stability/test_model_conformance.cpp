@@ -347,6 +347,62 @@ TEST_P(ModelConformance, AGroupAtRestWaitsWhileAMoverPressesOnItAndFreezesOnceIt
   EXPECT_TRUE(frozen(1));
 }
 
+/// `upper`, at rest on `lower` over the rectangle x0..x1, y0..y1 at height
+/// z, pressing on it at the rectangle's corners with `share` of its weight,
+/// as the engine split its weight in a step of `dt`.
+PairContact pressing(BodyHandle upper, BodyHandle lower, double x0, double x1, double y0, double y1,
+                     double z, double share, double dt) {
+  PairContact contact = resting(upper, lower, x0, x1, y0, y1, z);
+  for (const Eigen::Vector3d& corner : contact.points) {
+    ContactPoint point;
+    point.position = corner;
+    point.normal = Eigen::Vector3d::UnitZ();
+    point.impulse = share * kKaplaMass * 9.81 * dt / 4.0;  // on `upper`, up
+    contact.manifold.push_back(point);
+  }
+  return contact;
+}
+
+TEST_P(ModelConformance, ABrickAtRestTipsACantileverWhereStaticsSaysAndNotWhereTheEngineSplitsIt) {
+  // b0 overhangs the table's edge at x = 0.6 with its centre 5 mm inside;
+  // b2 beside it (y = 30 mm) with its centre 40 mm inside. b1, crosswise at
+  // x = 0.612, rests on both ends: their patches span y in [-11.7, 11.7]
+  // and [18.3, 41.7] mm. The engine puts all of b1's weight on b0, which
+  // taken as a fixed load tips b0 (12 mm past the edge against its own
+  // 5 mm). But b1's centre is over b2's patch (y = 30 mm), so statics may
+  // carry all of it there, and b0 must stay. Centred over b0 instead
+  // (y = 0), b1 can only press on b0, and their joint centre of mass is
+  // past the edge ((0.595 + 0.612) / 2 = 0.6035): b0 must tip.
+  const double dt = 1e-3, x = 0.612, w = kKaplaWidth / 2, t = kKaplaThickness;
+  freezeCantilever(0.6, 0.005);
+  StabilityInput beside;
+  beside.placed.push_back(
+      {kapla(2, 0.56, 0.03, 0),
+       {resting(2, kTableHandle, 0.56 - kKaplaLength / 2, 0.6, 0.03 - w, 0.03 + w, 0.0)}});
+  ASSERT_EQ(request(beside).freeze.size(), 1u);
+  const double b2_end = 0.56 + kKaplaLength / 2;
+  const std::vector<PairContact> on_both = {
+      pressing(1, 0, x - w, x + w, -w, w, t, 1.0, dt),
+      pressing(1, 2, x - w, b2_end, 0.03 - w, 0.03 + w, t, 0.0, dt)};
+  const StabilityDecisions decisions =
+      stepFor(4.0 * options_.rest_time, {kapla(1, x, 0.03, t)}, on_both);
+  for (const WakeDecision& woken : decisions.wake) ADD_FAILURE() << "woken: " << woken.reason;
+  EXPECT_TRUE(frozen(0));
+  EXPECT_TRUE(frozen(1));
+}
+
+TEST_P(ModelConformance, ABrickAtRestOnlyOnACantileversEndTipsIt) {
+  // The control of the test above: b1 centred over b0 (y = 0), on b0 alone.
+  const double dt = 1e-3, x = 0.612, w = kKaplaWidth / 2, t = kKaplaThickness;
+  freezeCantilever(0.6, 0.005);
+  const std::vector<PairContact> on_b0 = {pressing(1, 0, x - w, x + w, -w, w, t, 1.0, dt)};
+  const StabilityDecisions decisions =
+      stepFor(4.0 * options_.rest_time, {kapla(1, x, 0.0, t)}, on_b0);
+  EXPECT_FALSE(frozen(0));
+  ASSERT_FALSE(decisions.wake.empty());
+  EXPECT_EQ(decisions.wake.front().brick, 0u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Registry, ModelConformance, ::testing::ValuesIn(test::modelModes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
