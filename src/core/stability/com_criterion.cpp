@@ -355,6 +355,10 @@ void ComCriterion::balanceLeaning(SupportGraph* graph, const std::vector<BodyHan
 
 std::vector<WakeDecision> ComCriterion::check(SupportGraph* graph,
                                               const std::vector<BodyHandle>& component) const {
+  // Balanced by statics when last judged, and judged by statics again
+  // whatever the COM rule says (its split of shared loads is one of many):
+  // where only loads changed, statics around them answers first.
+  if (balanced_.stillBalanced(graph, component, options_, kMeasuredLoadFactor)) return {};
   bool shared = false;
   std::vector<WakeDecision> unstable = checkLoadsDown(graph, component, &shared);
   if (unstable.empty() || !(shared || statics_on_every_failure_)) return unstable;
@@ -408,11 +412,18 @@ std::vector<WakeDecision> ComCriterion::judgeByStatics(SupportGraph* graph,
       assembleStatics(*graph, component, options_, kMeasuredLoadFactor);
   const StaticsSolution solution = assembly.solve(&basis_);
   // A solver failure keeps the COM rule's answer: never freeze on no answer.
-  if (!solution.solved) return by_com;
+  if (!solution.solved) {
+    balanced_.forget(component);
+    return by_com;
+  }
   std::vector<std::vector<ContactForce>> forces = assembly.contactForces(solution);
   for (std::size_t i = 0; i < component.size(); ++i)
     graph->find(component[i])->stability.contact_forces = std::move(forces[i]);
-  if (solution.feasible) return {};
+  if (solution.feasible) {
+    balanced_.keep(*graph, component);
+    return {};
+  }
+  balanced_.forget(component);
   // What wakes is the collapse mechanism: every brick that moves in it, at
   // once. A part of it would be held by the bricks the same failure must
   // move, and would stand there frozen again.

@@ -3,6 +3,7 @@
 #include <memory>
 #include <utility>
 
+#include "stability/balanced_components.h"
 #include "stability/rigid_block_statics.h"
 #include "stability/stability_criterion.h"
 #include "stability/statics_memo.h"
@@ -114,6 +115,8 @@ class ComCriterion : public StabilityCriterion {
   /// A pile's component is judged again each time a brick joins it, and
   /// its leaning groups far from the newcomer pose the same LPs again.
   mutable StaticsMemo memo_;
+  /// The component LPs that balanced: a load change is judged where it acts.
+  mutable BalancedComponents balanced_;
 };
 
 }  // namespace brick_stack_sim
