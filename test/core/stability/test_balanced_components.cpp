@@ -16,9 +16,10 @@
 namespace brick_stack_sim {
 namespace {
 
-constexpr double kGravity = 9.81;  ///< Statics' g [m/s^2] (StaticsOptions).
-constexpr double kMass = 0.01;     ///< Each block [kg].
-constexpr double kHalf = 0.01;     ///< Half a block's side [m]: 20 mm cubes.
+constexpr double kGravity = 9.81;             ///< Statics' g [m/s^2] (StaticsOptions).
+constexpr double kMass = 0.01;                ///< Each block [kg].
+constexpr double kWeight = kMass * kGravity;  ///< [N]
+constexpr double kHalf = 0.01;                ///< Half a block's side [m]: 20 mm cubes.
 constexpr double kFriction = 0.5;
 
 /// The four corners of a block's face at height `z`, centred on (x, y),
@@ -83,8 +84,7 @@ std::pair<double, double> unbalanced(const SupportGraph& graph, BodyHandle brick
   for (const PointForce& load : node.stability.external_loads) add(load.force, load.point);
   for (const ContactForce& contact : node.stability.contact_forces)
     add(contact.force, contact.point);
-  const double weight = node.mass * kGravity;
-  return {force.norm() / weight, torque.norm() / (weight * 2 * kHalf)};
+  return {force.norm() / kWeight, torque.norm() / (kWeight * 2 * kHalf)};
 }
 
 void expectEveryBrickBalanced(const SupportGraph& graph) {
@@ -106,24 +106,29 @@ TEST(BalancedComponents, NothingKeptNothingSaid) {
   EXPECT_FALSE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
 }
 
-TEST(BalancedComponents, UnchangedLoadsNeedNoStatics) {
+/// The bridge, solved whole and kept: what the model holds once its
+/// component balanced.
+class KeptBridge : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(solveWhole(&graph));
+    balanced.keep(graph, kComponent);
+  }
+
   SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
   BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
+};
+
+TEST_F(KeptBridge, UnchangedLoadsNeedNoStatics) {
   for (BodyHandle brick : kComponent) graph.find(brick)->stability.contact_forces.clear();
   EXPECT_TRUE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
   EXPECT_EQ(balanced.localSolves(), 0u);
   expectEveryBrickBalanced(graph);
 }
 
-TEST(BalancedComponents, ALoadOnABottomBlockIsSolvedForItAlone) {
+TEST_F(KeptBridge, ALoadOnABottomBlockIsSolvedForItAlone) {
   // Block 1 stands on the table: a push down on it reaches nothing else, so
   // the others keep their forces and block 1 alone is solved.
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
   const std::vector<ContactForce> kept_on_3 = graph.find(3)->stability.contact_forces;
   load(&graph, 1, {0, 0, -0.05}, {3 * kHalf + 0.005, 0, 2 * kHalf});
   ASSERT_TRUE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
@@ -134,70 +139,48 @@ TEST(BalancedComponents, ALoadOnABottomBlockIsSolvedForItAlone) {
   for (std::size_t i = 0; i < on_3.size(); ++i) EXPECT_EQ(on_3[i].force, kept_on_3[i].force);
 }
 
-TEST(BalancedComponents, ALoadOnTheTopReachesEveryBrickBelowIt) {
+TEST_F(KeptBridge, ALoadOnTheTopReachesEveryBrickBelowIt) {
   // A push down on block 3, off its centre towards the bridge's middle:
   // through block 2 to both supports.
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
   load(&graph, 3, {0, 0, -0.08}, {0.004, 0, 6 * kHalf});
   ASSERT_TRUE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
   expectEveryBrickBalanced(graph);
   EXPECT_TRUE(solveWhole(&graph));
 }
 
-TEST(BalancedComponents, ASidewaysPushBeyondFrictionIsLeftToTheWholeComponent) {
+TEST_F(KeptBridge, ASidewaysPushBeyondFrictionIsLeftToTheWholeComponent) {
   // Block 3 pushed sideways with more than friction can hold under its
   // weight and the push's own vertical part: 0.6 of its weight against
   // 0.5 x (1 + 0.1). Statics of the whole cannot hold it either.
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
-  const double weight = kMass * kGravity;
-  load(&graph, 3, {0.6 * weight, 0, -0.1 * weight}, {0, 0, 5 * kHalf});
+  load(&graph, 3, {0.6 * kWeight, 0, -0.1 * kWeight}, {0, 0, 5 * kHalf});
   EXPECT_FALSE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
   EXPECT_FALSE(solveWhole(&graph));
 }
 
-TEST(BalancedComponents, AMovedBrickIsNotJudgedFromTheKeptForces) {
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
+TEST_F(KeptBridge, AMovedBrickIsNotJudgedFromTheKeptForces) {
   graph.find(3)->com.x() += 1e-6;
   EXPECT_FALSE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
   EXPECT_EQ(balanced.localSolves(), 0u);
 }
 
-TEST(BalancedComponents, ForgottenComponentsAreSolvedWhole) {
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
+TEST_F(KeptBridge, ForgottenComponentsAreSolvedWhole) {
   balanced.forget(kComponent);
   EXPECT_FALSE(balanced.stillBalanced(&graph, kComponent, options(), 1.0));
 }
 
-TEST(BalancedComponents, WhatItCallsBalancedTheWholeComponentsStaticsBalances) {
+TEST_F(KeptBridge, WhatItCallsBalancedTheWholeComponentsStaticsBalances) {
   // Random loads on random blocks, each judged from what the last balanced
   // judgement kept, as the model does; every "balanced" is checked against
   // the sums of forces and torques and against the whole component's LP.
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> which(0, 3);
-  SupportGraph graph = bridge();
-  ASSERT_TRUE(solveWhole(&graph));
-  BalancedComponents balanced;
-  balanced.keep(graph, kComponent);
-  const double weight = kMass * kGravity;
   int said_balanced = 0, left_to_whole = 0;
   for (int trial = 0; trial < 200; ++trial) {
     const BodyHandle brick = static_cast<BodyHandle>(which(random));
     const Eigen::Vector3d com = graph.find(brick)->com;
-    const Eigen::Vector3d force(0.4 * weight * unit(random), 0.4 * weight * unit(random),
-                                -weight * (0.2 + unit(random)));
+    const Eigen::Vector3d force(0.4 * kWeight * unit(random), 0.4 * kWeight * unit(random),
+                                -kWeight * (0.2 + unit(random)));
     load(&graph, brick, force,
          com + Eigen::Vector3d(kHalf * unit(random), kHalf * unit(random), kHalf));
     if (balanced.stillBalanced(&graph, kComponent, options(), 1.0)) {
