@@ -55,7 +55,28 @@ class BalancedComponents {
   /// In handle order.
   using Component = std::vector<Brick>;
 
+  /// The bricks solved locally, by index in the sorted component: flags,
+  /// and the indices in order.
+  struct Local {
+    std::vector<char> in;
+    std::vector<std::size_t> reached;
+  };
+
   static std::uint64_t keyOf(const std::vector<BodyHandle>& sorted_bricks);
+  /// Index of `handle` in `sorted`, -1 when it is not there (the ground).
+  static std::ptrdiff_t indexIn(const std::vector<BodyHandle>& sorted, BodyHandle handle);
+  /// The bricks of `sorted` whose loads in `graph` differ from `kept`'s,
+  /// with everything they rest or lean on, down to the ground. False when a
+  /// brick is not where `kept` has it, or not on the same contacts.
+  static bool reachOfChangedLoads(const SupportGraph& graph, const std::vector<BodyHandle>& sorted,
+                                  const Component& kept, const StabilityOptions& options,
+                                  Local* local);
+  /// Statics of the `local` bricks alone, the others' contacts with them
+  /// pushing with `kept`'s forces; when it balances, `kept` takes its
+  /// forces and the new loads.
+  bool solveLocally(const SupportGraph& graph, const std::vector<BodyHandle>& sorted,
+                    const Local& local, const StabilityOptions& options, double load_factor,
+                    Component* kept);
 
   /// By the hash of their sorted handles; a few components at a time.
   std::unordered_map<std::uint64_t, Component> kept_;
