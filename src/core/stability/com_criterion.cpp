@@ -166,11 +166,6 @@ bool ComCriterion::inclined(const BrickStability& stability) const {
   return false;
 }
 
-bool ComCriterion::leans(const BrickStability& stability) const {
-  return std::any_of(stability.side_contacts.begin(), stability.side_contacts.end(),
-                     [&](const SupportPatch& patch) { return leansOn(patch, options_); });
-}
-
 bool ComCriterion::stands(const std::vector<BodyMotion>& bricks,
                           const std::vector<const BrickStability*>& stability) const {
   const StaticsSolution solution = solveFree(bricks, stability);
@@ -195,7 +190,7 @@ FreezeDecision ComCriterion::admittedByStatics(const BodyMotion& brick,
                                                const BrickStability& stability) const {
   FreezeDecision decision;
   decision.brick = brick.handle;
-  decision.kind = leans(stability) ? BrickState::kLeaning : BrickState::kStable;
+  decision.kind = leans(stability, options_) ? BrickState::kLeaning : BrickState::kStable;
   decision.margin = stability.margin;
   decision.supporters = supportersOf(stability);
   std::string names;
@@ -223,7 +218,7 @@ bool ComCriterion::admits(const BodyMotion& brick, const BrickStability& stabili
   }
   // Without anything to lean on, the LP of one brick on fixed supporters
   // says no more than the COM rule.
-  if (!leans(stability) || !stands({brick}, {&stability})) return false;
+  if (!leans(stability, options_) || !stands({brick}, {&stability})) return false;
   *decision = admittedByStatics(brick, stability);
   return true;
 }

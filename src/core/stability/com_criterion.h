@@ -96,8 +96,6 @@ class ComCriterion : public StabilityCriterion {
   /// could hold a vertical load on (then the COM rule's vertical loads are
   /// not an equilibrium, and statics must say whether it rests).
   bool inclined(const BrickStability& stability) const;
-  /// Whether it leans on something (a side contact other than a brick resting on it).
-  bool leans(const BrickStability& stability) const;
   /// Admitted by statics: stable or leaning, and on what.
   FreezeDecision admittedByStatics(const BodyMotion& brick, const BrickStability& stability) const;
   WakeDecision outsideSupport(BodyHandle brick, double margin) const;

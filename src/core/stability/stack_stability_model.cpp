@@ -370,12 +370,8 @@ bool StackStabilityModel::standsWithSourcesAtRest(SupportGraph* graph,
   if (!evaluateGroup(bodies, index, &outside, &stability)) return false;
   SupportGraph what_if = graph->componentsOf(component);
   unloadJoiners(&what_if, sources);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const bool leaning =
-        std::any_of(stability[i].side_contacts.begin(), stability[i].side_contacts.end(),
-                    [&](const SupportPatch& patch) { return leansOn(patch, options_); });
-    join(&what_if, bodies[i], leaning, stability[i], options_);
-  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    join(&what_if, bodies[i], leans(stability[i], options_), stability[i], options_);
   // Only the component's bricks are asked about: a brick at rest that
   // cannot stay is the engine's to move, and moves nothing frozen here
   // unless the check names it too.

@@ -1,5 +1,6 @@
 #include "stability/statics_assembly.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace brick_stack_sim {
@@ -9,6 +10,11 @@ bool leansOn(const SupportPatch& side_contact, const StabilityOptions& options) 
   for (const Eigen::Vector3d& normal : side_contact.normals)
     if (normal.z() > from_above) return true;
   return false;
+}
+
+bool leans(const BrickStability& stability, const StabilityOptions& options) {
+  return std::any_of(stability.side_contacts.begin(), stability.side_contacts.end(),
+                     [&](const SupportPatch& patch) { return leansOn(patch, options); });
 }
 
 int StaticsAssembly::addFree(BodyHandle brick, double mass, const Eigen::Vector3d& com) {

@@ -13,6 +13,8 @@ namespace brick_stack_sim {
 /// on it from above (a counterweight, a plank's edge), whose load reaches the
 /// brick through that brick's own supports. Judged on the patch's normals.
 bool leansOn(const SupportPatch& side_contact, const StabilityOptions& options);
+/// Whether any of a brick's side contacts is one it leans on (leansOn).
+bool leans(const BrickStability& stability, const StabilityOptions& options);
 
 /// The statics problem (solveStatics) of some bricks of a stack, built from
 /// their support patches: the bricks added are free, every other supporter
