@@ -137,6 +137,15 @@ FlushBoxBoxAlgorithm::FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructio
   apart_ = dynamic_cast<ApartPairDispatcher*>(info.m_dispatcher1);
 }
 
+FlushBoxBoxAlgorithm::~FlushBoxBoxAlgorithm() {
+  if (extra_) m_dispatcher->releaseManifold(extra_);
+}
+
+void FlushBoxBoxAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) {
+  btBoxBoxCollisionAlgorithm::getAllContactManifolds(manifolds);
+  if (extra_) manifolds.push_back(extra_);
+}
+
 void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
                                             const btCollisionObjectWrapper* body1,
                                             const btDispatcherInfo& info,
@@ -152,8 +161,10 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
   if (detected_ && manifold_->getNumContacts() > 0 && withinReuseDrift(relative)) {
     replayManifold(result);
   } else {
-    if (!addFlushCorners(*body0, *body1, result))
+    if (!addFlushCorners(*body0, *body1, result)) {
+      fillExtra(nullptr, nullptr, false, Eigen::Vector3d::Zero(), result);
       btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
+    }
     rememberDetection(relative);
   }
   offerGap(*body0, *body1);
@@ -181,12 +192,18 @@ void FlushBoxBoxAlgorithm::replayManifold(btManifoldResult* result) {
   // its depth along that normal.
   const btMatrix3x3& basis_b = manifold_->getBody1()->getWorldTransform().getBasis();
   const btMatrix3x3 turn = basis_b.timesTranspose(last_basis_b_);
-  for (int i = 0; i < manifold_->getNumContacts(); ++i) {
-    btManifoldPoint& point = manifold_->getContactPoint(i);
+  last_basis_b_ = basis_b;
+  if (extra_ && extra_->getNumContacts() > 0) replay(extra_, turn, result);
+  replay(manifold_, turn, result);
+}
+
+void FlushBoxBoxAlgorithm::replay(btPersistentManifold* manifold, const btMatrix3x3& turn,
+                                  btManifoldResult* result) {
+  for (int i = 0; i < manifold->getNumContacts(); ++i) {
+    btManifoldPoint& point = manifold->getContactPoint(i);
     point.m_normalWorldOnB = turn * point.m_normalWorldOnB;
   }
-  last_basis_b_ = basis_b;
-  result->setPersistentManifold(manifold_);
+  result->setPersistentManifold(manifold);
   result->refreshContactPoints();
 }
 
@@ -198,7 +215,7 @@ void FlushBoxBoxAlgorithm::rememberDetection(const btTransform& relative) {
 
 bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0,
                                            const btCollisionObjectWrapper& body1,
-                                           btManifoldResult* result) const {
+                                           btManifoldResult* result) {
   if (!mayRestFlush(body0.getWorldTransform().getBasis(), body1.getWorldTransform().getBasis()))
     return false;
   const OrientedBox box0 = orientedBox(body0), box1 = orientedBox(body1);
@@ -212,35 +229,48 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
     return false;
   const OrientedBox& upper = body1_lower ? box0 : box1;
   const double reach = manifold_->getContactBreakingThreshold();
-  struct Corner {
-    Eigen::Vector3d on_lower, on_upper;
-    double depth;  // < 0: penetrating
-  };
-  std::array<Corner, 4> within_reach;
+  // Two rectangles overlap in at most eight corners.
+  std::array<Corner, 8> within_reach;
   std::size_t count = 0;
   const ChosenCorners chosen = widestFour(patch, normal);
   const FacingFace upper_face = faceToward(upper, -normal);
-  for (std::size_t i = 0; i < chosen.count; ++i) {
-    const Eigen::Vector3d& c = patch[chosen.index[i]];
+  const auto take = [&](std::size_t index) {
+    const Eigen::Vector3d& c = patch[index];
     const double depth = upper_face.above(c);
-    if (depth <= reach) within_reach[count++] = {c, c + normal * depth, depth};
-  }
+    if (depth <= reach && count < within_reach.size())
+      within_reach[count++] = {c, c + normal * depth, depth};
+  };
+  for (std::size_t i = 0; i < chosen.count; ++i) take(chosen.index[i]);
+  for (std::size_t i = 0; i < patch.size(); ++i)
+    if (std::find(chosen.index.begin(), chosen.index.begin() + chosen.count, i) ==
+        chosen.index.begin() + chosen.count)
+      take(i);
   if (count == 0) return false;
-  const auto corners_end = within_reach.begin() + static_cast<std::ptrdiff_t>(count);
+  const Corner* corners = within_reach.data();
+  const std::size_t in_first = std::min<std::size_t>(count, 4);
+  fillManifold(manifold_, corners, corners + in_first, body1_lower, normal, result);
+  fillExtra(corners + in_first, corners + count, body1_lower, normal, result);
+  return true;
+}
+
+void FlushBoxBoxAlgorithm::fillManifold(btPersistentManifold* manifold, const Corner* begin,
+                                        const Corner* end, bool body1_lower,
+                                        const Eigen::Vector3d& normal, btManifoldResult* result) {
+  const double reach = manifold->getContactBreakingThreshold();
   // Points the corners will not replace would hold slots the manifold then
   // frees by its own choice: they go first. A corner replaces the point it
   // lies within reach of, and keeps its warm start.
-  result->setPersistentManifold(manifold_);
-  for (int j = manifold_->getNumContacts() - 1; j >= 0; --j) {
-    const btManifoldPoint& cached = manifold_->getContactPoint(j);
+  result->setPersistentManifold(manifold);
+  for (int j = manifold->getNumContacts() - 1; j >= 0; --j) {
+    const btManifoldPoint& cached = manifold->getContactPoint(j);
     const Eigen::Vector3d middle =
         0.5 * convertBtToEigen(cached.getPositionWorldOnA() + cached.getPositionWorldOnB());
     bool kept = false;
-    for (auto corner = within_reach.begin(); corner != corners_end; ++corner)
+    for (const Corner* corner = begin; corner != end; ++corner)
       kept |= (0.5 * (corner->on_lower + corner->on_upper) - middle).norm() < reach;
-    if (!kept) manifold_->removeContactPoint(j);
+    if (!kept) manifold->removeContactPoint(j);
   }
-  for (auto corner = within_reach.begin(); corner != corners_end; ++corner) {
+  for (const Corner* corner = begin; corner != end; ++corner) {
     if (body1_lower)
       result->addContactPoint(convertEigenToBt(normal), convertEigenToBt(corner->on_lower),
                               corner->depth);
@@ -249,7 +279,22 @@ bool FlushBoxBoxAlgorithm::addFlushCorners(const btCollisionObjectWrapper& body0
                               corner->depth);
   }
   result->refreshContactPoints();
-  return true;
+}
+
+void FlushBoxBoxAlgorithm::fillExtra(const Corner* begin, const Corner* end, bool body1_lower,
+                                     const Eigen::Vector3d& normal, btManifoldResult* result) {
+  if (begin == end) {
+    if (extra_) extra_->clearManifold();
+    manifold_->m_companionIdA = 0;
+    return;
+  }
+  // The same bodies in the same order as the first, so that its normals
+  // point the same way.
+  if (!extra_) extra_ = m_dispatcher->getNewManifold(manifold_->getBody0(), manifold_->getBody1());
+  manifold_->m_companionIdA = kSplitPatchTag;
+  extra_->m_companionIdA = kSplitPatchTag;
+  fillManifold(extra_, begin, end, body1_lower, normal, result);
+  result->setPersistentManifold(manifold_);
 }
 
 btCollisionAlgorithm* FlushBoxBoxAlgorithm::CreateFunc::CreateCollisionAlgorithm(

@@ -21,10 +21,16 @@ namespace brick_stack_sim {
 /// one that bears nothing, its warm-started impulse with it, and a plank
 /// lying across another is kicked every few steps, never at rest for a
 /// whole rest window. Here, where the faces are parallel within
-/// kFlushAngle and touch, the manifold is given the overlap's corners
-/// (four of them, those that span the largest area, when there are more):
+/// kFlushAngle and touch, the manifold is given the overlap's corners:
 /// chosen by geometry, the same every step while the boxes rest, so every
 /// point keeps its warm start. Everywhere else Bullet's detector runs.
+///
+/// A manifold holds four points, and two planks lying along each other at
+/// a small angle overlap in a hexagon. Four of its corners span less than
+/// the whole: a plank loaded off that quadrilateral tipped about its side
+/// wherever statics holds it, and rocked in place. The four that span the
+/// largest area go to the pair's manifold and the others to a second one,
+/// tagged (kSplitPatchTag) so that a reader takes both as one pair.
 ///
 /// A pair with points whose relative pose has moved less than kReuseDrift
 /// since its manifold was last detected keeps that manifold: its points ride with the
@@ -37,11 +43,18 @@ namespace brick_stack_sim {
 /// which a point can be made gives that excess to an ApartPairDispatcher
 /// (when it is the dispatcher), which passes the pair over until its bodies
 /// could have closed it.
+/// btPersistentManifold::m_companionIdA (which Bullet itself never reads)
+/// of both manifolds of a pair whose flush corners are split between two.
+constexpr int kSplitPatchTag = 0x5f1a5;
+
 class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
  public:
   FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
                        const btCollisionObjectWrapper* body0,
                        const btCollisionObjectWrapper* body1);
+  ~FlushBoxBoxAlgorithm() override;
+
+  void getAllContactManifolds(btManifoldArray& manifolds) override;
 
   void processCollision(const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
@@ -54,18 +67,37 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   };
 
  private:
-  /// Puts the flush corners of the two boxes into `manifold`; false (and
-  /// nothing changed) where their faces do not rest flush.
+  /// A corner of a flush patch within reach of the upper face.
+  struct Corner {
+    Eigen::Vector3d on_lower, on_upper;
+    double depth;  // < 0: penetrating
+  };
+
+  /// Puts the flush corners of the two boxes into the pair's manifolds;
+  /// false (and nothing changed) where their faces do not rest flush.
   bool addFlushCorners(const btCollisionObjectWrapper& body0, const btCollisionObjectWrapper& body1,
-                       btManifoldResult* result) const;
+                       btManifoldResult* result);
+
+  /// Makes `manifold`'s points `corners`, each keeping the warm start of
+  /// the point it replaces.
+  static void fillManifold(btPersistentManifold* manifold, const Corner* begin, const Corner* end,
+                           bool body1_lower, const Eigen::Vector3d& normal,
+                           btManifoldResult* result);
+
+  /// Holds the corners past the first four, or (none) empties the second
+  /// manifold and untags the pair.
+  void fillExtra(const Corner* begin, const Corner* end, bool body1_lower,
+                 const Eigen::Vector3d& normal, btManifoldResult* result);
 
   /// Whether the smaller box has moved less than kReuseDrift, at every
   /// point of it, relative to the larger since the manifold was last
   /// detected; `relative` is its pose in the larger one's frame.
   bool withinReuseDrift(const btTransform& relative) const;
 
-  /// Moves the manifold's points with the bodies, as if detected again.
+  /// Moves the manifolds' points with the bodies, as if detected again.
   void replayManifold(btManifoldResult* result);
+  /// Turns `manifold`'s normals with body B and refreshes its points.
+  void replay(btPersistentManifold* manifold, const btMatrix3x3& turn, btManifoldResult* result);
 
   /// Keeps what a replay starts from once the manifold has been detected.
   void rememberDetection(const btTransform& relative);
@@ -77,6 +109,9 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
   /// The pair's manifold, which the base class owns (null when the pair
   /// needs no collision).
   btPersistentManifold* manifold_ = nullptr;
+  /// The flush corners past the four manifold_ holds (null until a patch
+  /// had more than four); this algorithm owns it.
+  btPersistentManifold* extra_ = nullptr;
   /// The overlap of the faces, kept between steps so that a resting pair's
   /// step does not go to the heap for it.
   mutable std::vector<Eigen::Vector3d> patch_;

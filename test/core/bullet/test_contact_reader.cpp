@@ -46,6 +46,33 @@ TEST(ContactReader, ARestingBrickCarriesItsWeightThroughTheTable) {
   EXPECT_LT(pair.approach_speed, 1e-3);
 }
 
+TEST(ContactReader, PlanksOverlappingInAHexagonAreOnePairWithSixPointsCarryingTheWeight) {
+  // A plank on another at 20 degrees, its centre 46 mm along and 5 mm
+  // across from the other's: their faces overlap in a hexagon, whose six
+  // corners fill more than one manifold. It is still one pair, with every
+  // corner, and statics: its points carry the upper plank's weight.
+  WorldOptions options;
+  BulletScene scene(options);
+  const BrickType kapla = *test::packageTypes().find("kapla");
+  const double t = test::kKaplaThickness;
+  scene.addBrick(0, kapla, test::placement("lower", {0.39, 0.26, 0.5 * t}));
+  scene.addBrick(1, kapla, test::placement("upper", {0.344, 0.255, 1.5 * t}, 20.0 * M_PI / 180.0));
+  for (int i = 0; i < 500; ++i) scene.step(options.time_step);
+  std::vector<PairContact> contacts;
+  readContacts(scene, options.stability.contact_distance, &contacts);
+  int planks = 0;
+  for (const PairContact& pair : contacts) {
+    if (pair.a == kTableHandle || pair.b == kTableHandle) continue;
+    ++planks;
+    ASSERT_EQ(pair.points.size(), 6u);
+    double impulse = 0.0;
+    for (const ContactPoint& point : pair.manifold) impulse += point.impulse;
+    EXPECT_NEAR(impulse, kapla.mass * options.gravity * options.time_step,
+                1e-3 * kapla.mass * options.gravity * options.time_step);
+  }
+  EXPECT_EQ(planks, 1);
+}
+
 TEST(ContactReader, ASlidingBrickIsHeldBackByKineticFrictionMuMg) {
   // Coulomb: a brick sliding on the table feels mu m g against its motion,
   // and the table still carries its weight.

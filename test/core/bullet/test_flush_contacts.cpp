@@ -54,5 +54,46 @@ TEST(FlushContacts, AColumnOfPlanksCrossingAtAnglesStaysStill) {
   EXPECT_LT(fastest_spin, 0.1 * StabilityOptions().rest_angular_speed);
 }
 
+TEST(FlushContacts, APlankLoadedAnywhereOverItsOverlapWithAnotherStaysStill) {
+  // A plank lies on another at 20 degrees, and a third lies on it 10 mm off
+  // its axis. The two planks' overlap is a hexagon; their joint COM is 3.7
+  // mm inside it, so statics holds them. It is also 3.7 mm outside the
+  // quadrilateral of the hexagon's four corners that span the largest area:
+  // with only those four in the contact, the pair tipped about the
+  // quadrilateral's side and rocked in place for good.
+  const WorldOptions options = stillWorld();
+  BulletScene scene(options);
+  const BrickType kapla = *test::packageTypes().find("kapla");
+  const Eigen::Vector3d base(0.39, 0.26, 0.0);
+  const double yaw = 20.0 * M_PI / 180.0;
+  const Eigen::Vector3d upper = base + Eigen::Vector3d(-0.046, -0.005, 0.0);
+  const Eigen::Vector3d top = upper + Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                                          Eigen::Vector3d(-0.015, 0.010, 0.0);
+  scene.addBrick(
+      0, kapla,
+      test::placement("lower", base + 0.5 * kKaplaThickness * Eigen::Vector3d::UnitZ(), 0.0));
+  scene.addBrick(
+      1, kapla,
+      test::placement("upper", upper + 1.5 * kKaplaThickness * Eigen::Vector3d::UnitZ(), yaw));
+  scene.addBrick(
+      2, kapla,
+      test::placement("top", top + 2.5 * kKaplaThickness * Eigen::Vector3d::UnitZ(), yaw));
+  for (int i = 0; i < 1000; ++i) scene.step(options.time_step);
+  const Eigen::Vector3d settled_offset = scene.pose(1).translation() - scene.pose(0).translation();
+  double fastest_spin = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    scene.step(options.time_step);
+    for (BodyHandle plank = 0; plank < 3; ++plank)
+      fastest_spin = std::max(fastest_spin, scene.angularSpeed(plank));
+  }
+  EXPECT_LT(fastest_spin, 0.1 * StabilityOptions().rest_angular_speed);
+  // Upright: the planks' faces stay parallel, as statics leaves them.
+  const Eigen::Vector3d up = scene.pose(1).linear().col(2);
+  EXPECT_GT(up.dot(scene.pose(0).linear().col(2)), std::cos(1e-3));
+  // And where it lay on the lower one, to a twentieth of a millimetre.
+  const Eigen::Vector3d offset = scene.pose(1).translation() - scene.pose(0).translation();
+  EXPECT_LT((offset - settled_offset).norm(), 5e-5);
+}
+
 }  // namespace
 }  // namespace brick_stack_sim
