@@ -13,7 +13,11 @@ bool RestTracker::atRest(const BodyMotion& body) const {
 
 RestTracker::Mover& RestTracker::advance(const BodyMotion& body, double dt) {
   Mover& mover = movers_[body.handle];
-  if (atRest(body)) {
+  const bool still =
+      !mover.has_last_com || (body.com - mover.last_com).norm() <= options_.rest_linear_speed * dt;
+  mover.last_com = body.com;
+  mover.has_last_com = true;
+  if (atRest(body) && still) {
     mover.rest_time += dt;
   } else {
     mover.rest_time = 0.0;

@@ -160,5 +160,28 @@ TEST(RestTracker, RestTimeGrowsWhileAtRestAndStartsOverWhenNot) {
   EXPECT_EQ(tracker.find(3), nullptr);
 }
 
+TEST(RestTracker, ABrickPushedOutOfAnOverlapWithoutVelocityIsNotAtRest) {
+  // Bullet's split impulse moves a brick out of a deep overlap by its
+  // position alone: its velocity stays below the rest speeds while its
+  // centre rises, here at three times the rest speed. It is still moving.
+  StabilityOptions options;
+  RestTracker tracker(options);
+  const double dt = 0.001;
+  BodyMotion rising = body(4);
+  EXPECT_DOUBLE_EQ(tracker.advance(rising, dt).rest_time, dt);  // nothing to compare yet
+  for (int step = 0; step < 30; ++step) {
+    rising.com.z() += 3 * options.rest_linear_speed * dt;
+    EXPECT_DOUBLE_EQ(tracker.advance(rising, dt).rest_time, 0.0);
+  }
+  EXPECT_TRUE(tracker.atRest(rising));  // by its velocity alone
+  // Once it stops rising it rests again; between steps (no time) it keeps
+  // what it had.
+  EXPECT_DOUBLE_EQ(tracker.advance(rising, dt).rest_time, dt);
+  EXPECT_DOUBLE_EQ(tracker.advance(rising, 0.0).rest_time, dt);
+  // Creeping slower than the rest speed is rest.
+  rising.com.x() += 0.5 * options.rest_linear_speed * dt;
+  EXPECT_DOUBLE_EQ(tracker.advance(rising, dt).rest_time, 2 * dt);
+}
+
 }  // namespace
 }  // namespace brick_stack_sim
