@@ -10,6 +10,11 @@
 
 namespace brick_stack_sim {
 
+/// The value of btPersistentManifold::m_companionIdA (a field Bullet itself
+/// never reads or writes) in both manifolds of a pair whose flush corners
+/// are split between two.
+constexpr int kSplitPatchTag = 0x5f1a5;
+
 /// Bullet's box-box narrowphase, with faces that rest flush given the
 /// corners of their overlap.
 ///
@@ -43,10 +48,6 @@ namespace brick_stack_sim {
 /// which a point can be made gives that excess to an ApartPairDispatcher
 /// (when it is the dispatcher), which passes the pair over until its bodies
 /// could have closed it.
-/// btPersistentManifold::m_companionIdA (which Bullet itself never reads)
-/// of both manifolds of a pair whose flush corners are split between two.
-constexpr int kSplitPatchTag = 0x5f1a5;
-
 class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
  public:
   FlushBoxBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,

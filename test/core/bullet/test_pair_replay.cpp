@@ -7,6 +7,7 @@
 // Coulomb says it does.
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -76,12 +77,15 @@ class PlankPair {
 /// the same normal and depth, and no point is left over.
 void expectSameContact(const std::vector<ContactPoint>& expected,
                        const std::vector<ContactPoint>& actual) {
+  // Both lists, shown only when a check below fails.
+  std::ostringstream listing;
   for (auto& p : expected)
-    std::cerr << "want " << p.position.transpose() << " n " << p.normal.transpose() << " d "
-              << p.depth << "\n";
+    listing << "want " << p.position.transpose() << " n " << p.normal.transpose() << " d "
+            << p.depth << "\n";
   for (auto& p : actual)
-    std::cerr << "have " << p.position.transpose() << " n " << p.normal.transpose() << " d "
-              << p.depth << "\n";
+    listing << "have " << p.position.transpose() << " n " << p.normal.transpose() << " d "
+            << p.depth << "\n";
+  SCOPED_TRACE(listing.str());
   ASSERT_EQ(expected.size(), actual.size());
   ASSERT_FALSE(expected.empty());
   for (const ContactPoint& want : expected) {
