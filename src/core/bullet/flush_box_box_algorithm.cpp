@@ -162,7 +162,7 @@ void FlushBoxBoxAlgorithm::processCollision(const btCollisionObjectWrapper* body
     replayManifold(result);
   } else {
     if (!addFlushCorners(*body0, *body1, result)) {
-      fillExtra(nullptr, nullptr, false, Eigen::Vector3d::Zero(), result);
+      dropExtra();
       btBoxBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
     }
     rememberDetection(relative);
@@ -284,8 +284,7 @@ void FlushBoxBoxAlgorithm::fillManifold(btPersistentManifold* manifold, const Co
 void FlushBoxBoxAlgorithm::fillExtra(const Corner* begin, const Corner* end, bool body1_lower,
                                      const Eigen::Vector3d& normal, btManifoldResult* result) {
   if (begin == end) {
-    if (extra_) extra_->clearManifold();
-    manifold_->m_companionIdA = 0;
+    dropExtra();
     return;
   }
   // The same bodies in the same order as the first, so that its normals
@@ -295,6 +294,11 @@ void FlushBoxBoxAlgorithm::fillExtra(const Corner* begin, const Corner* end, boo
   extra_->m_companionIdA = kSplitPatchTag;
   fillManifold(extra_, begin, end, body1_lower, normal, result);
   result->setPersistentManifold(manifold_);
+}
+
+void FlushBoxBoxAlgorithm::dropExtra() {
+  if (extra_) extra_->clearManifold();
+  manifold_->m_companionIdA = 0;
 }
 
 btCollisionAlgorithm* FlushBoxBoxAlgorithm::CreateFunc::CreateCollisionAlgorithm(

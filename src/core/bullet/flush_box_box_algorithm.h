@@ -85,10 +85,13 @@ class FlushBoxBoxAlgorithm : public btBoxBoxCollisionAlgorithm {
                            bool body1_lower, const Eigen::Vector3d& normal,
                            btManifoldResult* result);
 
-  /// Holds the corners past the first four, or (none) empties the second
-  /// manifold and untags the pair.
+  /// Holds the corners past the first four in the second manifold
+  /// (dropExtra() when there are none).
   void fillExtra(const Corner* begin, const Corner* end, bool body1_lower,
                  const Eigen::Vector3d& normal, btManifoldResult* result);
+  /// Empties the second manifold and untags the pair: one manifold holds
+  /// all its points.
+  void dropExtra();
 
   /// Whether the smaller box has moved less than kReuseDrift, at every
   /// point of it, relative to the larger since the manifold was last
