@@ -7,6 +7,7 @@
 
 #include "brick_stack_sim/core/allocation_guard.h"
 #include "brick_stack_sim/core/io/batch_runner.h"
+#include "brick_stack_sim/core/io/end_state_scene.h"
 #include "brick_stack_sim/tools/package_data.h"
 #include "brick_stack_sim/tools/run_command_line.h"
 
@@ -14,15 +15,15 @@ using namespace brick_stack_sim;
 
 namespace {
 
-/// Whether `path` (empty: standard output) can be written, without leaving a
-/// file behind that was not there.
-Status checkWritable(const std::string& path) {
+/// Whether `path` (empty: standard output or nowhere) can be written, without
+/// leaving a file behind that was not there; `what` names it in the message.
+Status checkWritable(const std::string& path, const std::string& what) {
   if (path.empty()) return Status::success();
   // access(), not opening it: reading a FIFO would block.
   const bool existed = ::access(path.c_str(), F_OK) == 0;
   const bool writable = static_cast<bool>(std::ofstream(path, std::ios::app));
   if (!existed && writable) std::remove(path.c_str());
-  if (!writable) return Status::error("cannot write report '" + path + "'");
+  if (!writable) return Status::error("cannot write " + what + " '" + path + "'");
   return Status::success();
 }
 
@@ -56,6 +57,38 @@ Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTyp
   return Status::success();
 }
 
+/// Writes the state `report` ended in as a scene to `path`, saying on
+/// standard error what it wrote and what it left out.
+Status saveEndState(const std::string& path, const Scene& scene, const RunReport& report,
+                    const BrickTypeLibrary& types, const WorldOptions& world) {
+  Scene end_state;
+  std::vector<LeftOutBrick> left_out;
+  if (Status made = endStateScene(scene, report, types, world, &end_state, &left_out); !made)
+    return made;
+  if (!(std::ofstream(path) << sceneAsYaml(end_state)))
+    return Status::error("cannot write scene '" + path + "'");
+  std::cerr << "stack_sim_run: wrote the state at t = " << report.sim_time << " s to '" << path
+            << "': " << end_state.bricks.size() << " brick(s)";
+  if (!left_out.empty())
+    std::cerr << ", " << left_out.size() << " left out that no scene can place, the first "
+              << left_out.front().id << ": " << left_out.front().reason;
+  std::cerr << "\n";
+  return Status::success();
+}
+
+/// Writes the report (to standard output without a path) and, when asked,
+/// the state the run ended in.
+Status writeResults(const RunCommandLine& cli, const Scene& scene, const RunReport& report,
+                    const BrickTypeLibrary& types, const WorldOptions& world) {
+  const std::string json = toJson(report);
+  if (cli.report_path.empty())
+    std::cout << json;
+  else if (!(std::ofstream(cli.report_path) << json))
+    return Status::error("cannot write report '" + cli.report_path + "'");
+  if (cli.save_scene_path.empty()) return Status::success();
+  return saveEndState(cli.save_scene_path, scene, report, types, world);
+}
+
 /// What the command line asks of the run.
 RunOptions runOptionsOf(const RunCommandLine& cli) {
   RunOptions options;
@@ -85,8 +118,10 @@ int run(int argc, char** argv) {
   RunReport report;
   const RunOptions options = runOptionsOf(cli);
   const DataOptions& data = cli.config.data;
-  // A report that cannot be written is found out before a long run, not after.
-  Status status = checkWritable(cli.report_path);
+  // A report or scene that cannot be written is found out before a long run,
+  // not after.
+  Status status = checkWritable(cli.report_path, "report");
+  if (status) status = checkWritable(cli.save_scene_path, "scene");
   if (status) status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
   if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, sceneLimits(data));
   std::vector<RefusedPlacement> skipped;
@@ -99,11 +134,8 @@ int run(int argc, char** argv) {
   // The bricks set aside were scheduled and refused like any other.
   report.scheduled += skipped.size();
   report.refused.insert(report.refused.begin(), skipped.begin(), skipped.end());
-  const std::string json = toJson(report);
-  if (cli.report_path.empty()) {
-    std::cout << json;
-  } else if (!(std::ofstream(cli.report_path) << json)) {
-    std::cerr << "stack_sim_run: cannot write report '" << cli.report_path << "'\n";
+  if (Status written = writeResults(cli, scene, report, types, options.world); !written) {
+    std::cerr << "stack_sim_run: " << written.message << "\n";
     return 1;
   }
   std::fprintf(stderr,

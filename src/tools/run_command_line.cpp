@@ -49,8 +49,9 @@ using FlagValues = std::vector<std::pair<std::string, std::string>>;
 Status collectFlags(const std::vector<std::string>& args, RunCommandLine* result, bool* no_sleep,
                     FlagValues* overrides) {
   static const std::set<std::string> kWithValue = {
-      "--config", "--scene", "--mode",      "--duration",  "--time-step",     "--iterations",
-      "--report", "--types", "--materials", "--scene-dir", "--fall-distance", "--fall-angle"};
+      "--config",        "--scene",      "--mode",      "--duration",  "--time-step",
+      "--iterations",    "--report",     "--types",     "--materials", "--scene-dir",
+      "--fall-distance", "--fall-angle", "--save-scene"};
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") {
@@ -116,6 +117,8 @@ Status applyFlags(const FlagValues& overrides, RunCommandLine* result) {
         parsed = Status::error("--fall-distance must be > 0 m, got '" + value + "'");
     } else if (flag == "--report") {
       result->report_path = value;
+    } else if (flag == "--save-scene") {
+      result->save_scene_path = value;
     } else if (flag == "--types") {
       data.types_urdf = value;
     } else if (flag == "--materials") {
@@ -148,6 +151,10 @@ std::string runUsage(const std::string& data_dir) {
          "  --no-sleep          turn Bullet's own deactivation off (baselines)\n"
          "  --report FILE       write the JSON here (default: standard output); checked\n"
          "                      for writing before the run\n"
+         "  --save-scene FILE   write the state the run ends in as a scene: every brick there\n"
+         "                      at the end, at t = 0 where it was and with its velocities,\n"
+         "                      to run again from there (bricks on the floor, which no scene\n"
+         "                      can place, are left out and named); checked before the run\n"
          "  --skip-bad-bricks   run a scene with bricks that cannot be placed (bad pose,\n"
          "                      outside the world, overlapping...) without them and exit 0;\n"
          "                      by default such a scene is refused (exit 1)\n"

@@ -17,7 +17,9 @@ struct RunCommandLine {
   SimulationConfig config;
   std::vector<std::string> config_files;  ///< --config, in order.
   std::string report_path;                ///< Empty: the JSON goes to standard output.
-  std::optional<double> duration;         ///< [s]
+  /// Where the state the run ends in is written as a scene; empty: nowhere.
+  std::string save_scene_path;
+  std::optional<double> duration;  ///< [s]
   /// Run a scene with bricks that cannot be placed without them (and exit 0)
   /// instead of refusing it.
   bool skip_bad_bricks = false;

@@ -21,7 +21,7 @@ TEST(RunCommandLine, ParsesTheDocumentedFlags) {
   RunCommandLine cli;
   const Status s = parseRunCommandLine(
       {"--scene", "tower10", "--mode", "none", "--duration", "20", "--time-step", "0.002",
-       "--iterations", "30", "--no-sleep", "--report", "out.json"},
+       "--iterations", "30", "--no-sleep", "--report", "out.json", "--save-scene", "end.yaml"},
       "/pkg", &cli);
   ASSERT_TRUE(s.ok) << s.message;
   EXPECT_EQ(cli.config.data.scene, "tower10");
@@ -31,6 +31,7 @@ TEST(RunCommandLine, ParsesTheDocumentedFlags) {
   EXPECT_EQ(cli.config.world.stability.mode, "none");
   EXPECT_FALSE(cli.config.world.sleeping.enabled);
   EXPECT_EQ(cli.report_path, "out.json");
+  EXPECT_EQ(cli.save_scene_path, "end.yaml");
   EXPECT_EQ(cli.config.data.types_urdf, "/pkg/urdf/bricks.urdf");
   EXPECT_EQ(cli.config.data.scene_dirs, std::vector<std::string>{"/pkg/scenes"});
 }
@@ -316,6 +317,40 @@ TEST(StackSimRun, AnUnwritableReportPathFailsBeforeTheRun) {
   std::remove(fresh.c_str());
   EXPECT_EQ(runExecutable("--scene no_such_scene --report " + fresh, &output), 1) << output;
   EXPECT_FALSE(std::ifstream(fresh)) << "a failed run left an empty report behind";
+}
+
+TEST(StackSimRun, SavesTheStateItEndsInAsASceneThatRunsOnFromThere) {
+  // A plank dropped onto the table and one dropped past its edge, which
+  // ends on the floor, where no scene can place it.
+  const std::string scene = writeYaml("run_save_from.yaml",
+                                      "name: two_drops\n"
+                                      "bricks:\n"
+                                      "  - {id: on, position: [0, 0, 0.05]}\n"
+                                      "  - {id: past, position: [0.65, 0, 0.05]}\n");
+  const std::string saved = ::testing::TempDir() + "/stack_sim_run_end_state.yaml";
+  std::remove(saved.c_str());
+  std::string output;
+  ASSERT_EQ(runExecutable("--scene " + scene + " --duration 1 --save-scene " + saved, &output), 0)
+      << output;
+  EXPECT_NE(output.find("1 brick(s), 1 left out that no scene can place, the first past"),
+            std::string::npos)
+      << output;
+  std::ifstream file(saved);
+  std::stringstream text;
+  text << file.rdbuf();
+  EXPECT_NE(text.str().find("name: two_drops"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("id: on"), std::string::npos) << text.str();
+  EXPECT_EQ(text.str().find("id: past"), std::string::npos) << text.str();
+  // Run again from there: the plank lies where it landed, and stays.
+  ASSERT_EQ(runExecutable("--scene " + saved + " --duration 0.5", &output), 0) << output;
+  EXPECT_NE(output.find("1 brick,"), std::string::npos) << output;
+  EXPECT_NE(output.find("largest displacement 0.000 mm"), std::string::npos) << output;
+
+  EXPECT_EQ(runExecutable("--scene tower10 --duration 100000 --save-scene /no_such_dir/end.yaml",
+                          &output, 20),
+            1)
+      << output;
+  EXPECT_NE(output.find("cannot write scene '/no_such_dir/end.yaml'"), std::string::npos) << output;
 }
 
 TEST(StackSimRun, WritesTheReportAndFailsClearlyOnBadInput) {

@@ -107,4 +107,11 @@ WorldOptions sceneWorldOptions(const Scene& scene, const WorldOptions& options);
 /// how a client hands a simulator the types a scene defines.
 std::string typesAsScene(const std::vector<BrickType>& types);
 
+/// `scene` as YAML that parseScene() reads back into the same scene: its
+/// name, expected outcome, table, friction and types, and every brick by id,
+/// type, time, position, orientation (a quaternion, to the last bit of a
+/// double) and velocities. Generators and pose noise are not written: their
+/// bricks are, as `bricks` holds them.
+std::string sceneAsYaml(const Scene& scene);
+
 }  // namespace brick_stack_sim
