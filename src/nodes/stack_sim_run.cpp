@@ -29,8 +29,8 @@ Status checkWritable(const std::string& path, const std::string& what) {
 
 /// Refuses a scene with bricks that can never be placed, naming the first;
 /// with --skip-bad-bricks takes them out of `scene` into `skipped` instead.
-Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTypeLibrary& types,
-                         const WorldOptions& world, std::vector<RefusedPlacement>* skipped) {
+Status skipOrRefuseBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTypeLibrary& types,
+                             const WorldOptions& world, std::vector<RefusedPlacement>* skipped) {
   std::vector<BadSceneBrick> bad;
   if (Status checked = findBadSceneBricks(*scene, types, world, &bad); !checked) return checked;
   if (bad.empty()) return Status::success();
@@ -42,18 +42,8 @@ Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTyp
         " of " + std::to_string(scene->bricks.size()) + ", id '" + first.placement.id +
         "'): " + bad.front().reason + " (--skip-bad-bricks runs the scene without them)");
   }
-  std::vector<ScheduledBrick> kept;
-  std::size_t next_bad = 0;
-  for (std::size_t i = 0; i < scene->bricks.size(); ++i) {
-    const ScheduledBrick& brick = scene->bricks[i];
-    if (next_bad < bad.size() && bad[next_bad].index == i) {
-      skipped->push_back(RefusedPlacement{brick.at, brick.placement.id, bad[next_bad].reason});
-      ++next_bad;
-    } else {
-      kept.push_back(brick);
-    }
-  }
-  scene->bricks = std::move(kept);
+  for (SetAsideBrick& aside : setAsideBadBricks(bad, scene))
+    skipped->push_back(RefusedPlacement{aside.brick.at, aside.brick.placement.id, aside.reason});
   return Status::success();
 }
 
@@ -62,7 +52,7 @@ Status setAsideBadBricks(const RunCommandLine& cli, Scene* scene, const BrickTyp
 Status saveEndState(const std::string& path, const Scene& scene, const RunReport& report,
                     const BrickTypeLibrary& types, const WorldOptions& world) {
   Scene end_state;
-  std::vector<LeftOutBrick> left_out;
+  std::vector<SetAsideBrick> left_out;
   if (Status made = endStateScene(scene, report, types, world, &end_state, &left_out); !made)
     return made;
   if (!(std::ofstream(path) << sceneAsYaml(end_state)))
@@ -71,7 +61,7 @@ Status saveEndState(const std::string& path, const Scene& scene, const RunReport
             << "': " << end_state.bricks.size() << " brick(s)";
   if (!left_out.empty())
     std::cerr << ", " << left_out.size() << " left out that no scene can place, the first "
-              << left_out.front().id << ": " << left_out.front().reason;
+              << left_out.front().brick.placement.id << ": " << left_out.front().reason;
   std::cerr << "\n";
   return Status::success();
 }
@@ -125,7 +115,7 @@ int run(int argc, char** argv) {
   if (status) status = BrickTypeLibrary::load(data.types_urdf, data.materials_yaml, &types);
   if (status) status = loadScene(data.scene, data.scene_dirs, types, &scene, sceneLimits(data));
   std::vector<RefusedPlacement> skipped;
-  if (status) status = setAsideBadBricks(cli, &scene, types, options.world, &skipped);
+  if (status) status = skipOrRefuseBadBricks(cli, &scene, types, options.world, &skipped);
   if (status) status = runScene(scene, types, options, &report);
   if (!status) {
     std::cerr << "stack_sim_run: " << status.message << "\n";

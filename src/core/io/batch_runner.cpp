@@ -182,6 +182,20 @@ Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
   return Status::success();
 }
 
+std::vector<SetAsideBrick> setAsideBadBricks(const std::vector<BadSceneBrick>& bad, Scene* scene) {
+  std::vector<SetAsideBrick> set_aside;
+  std::vector<ScheduledBrick> kept;
+  std::size_t next_bad = 0;
+  for (std::size_t i = 0; i < scene->bricks.size(); ++i) {
+    if (next_bad < bad.size() && bad[next_bad].index == i)
+      set_aside.push_back(SetAsideBrick{std::move(scene->bricks[i]), bad[next_bad++].reason});
+    else
+      kept.push_back(std::move(scene->bricks[i]));
+  }
+  scene->bricks = std::move(kept);
+  return set_aside;
+}
+
 Status runScene(const Scene& scene, const BrickTypeLibrary& types, const RunOptions& options,
                 RunReport* report) {
   const double last_placement = scene.bricks.empty() ? 0.0 : scene.bricks.back().at;

@@ -5,7 +5,7 @@ namespace brick_stack_sim {
 
 Status endStateScene(const Scene& scene, const RunReport& report, const BrickTypeLibrary& types,
                      const WorldOptions& world, Scene* end_state,
-                     std::vector<LeftOutBrick>* left_out) {
+                     std::vector<SetAsideBrick>* left_out) {
   Scene state;
   state.name = scene.name;
   state.table = scene.table;
@@ -24,17 +24,7 @@ Status endStateScene(const Scene& scene, const RunReport& report, const BrickTyp
   }
   std::vector<BadSceneBrick> bad;
   if (Status checked = findBadSceneBricks(state, types, world, &bad); !checked) return checked;
-  std::vector<ScheduledBrick> placeable;
-  std::size_t next_bad = 0;
-  for (std::size_t i = 0; i < state.bricks.size(); ++i) {
-    if (next_bad < bad.size() && bad[next_bad].index == i) {
-      left_out->push_back(LeftOutBrick{state.bricks[i].placement.id, bad[next_bad].reason});
-      ++next_bad;
-    } else {
-      placeable.push_back(std::move(state.bricks[i]));
-    }
-  }
-  state.bricks = std::move(placeable);
+  *left_out = setAsideBadBricks(bad, &state);
   *end_state = std::move(state);
   return Status::success();
 }

@@ -38,11 +38,11 @@ TEST(EndStateScene, PlacesEveryBrickWhereTheRunLeftItButThoseOnTheFloor) {
   EXPECT_LT(outcomeOf(report, "off").brick.pose.translation().z(), -0.7);
 
   Scene end_state;
-  std::vector<LeftOutBrick> left_out;
+  std::vector<SetAsideBrick> left_out;
   ASSERT_TRUE(
       endStateScene(scene, report, test::packageTypes(), options.world, &end_state, &left_out).ok);
   ASSERT_EQ(left_out.size(), 1u);
-  EXPECT_EQ(left_out[0].id, "off");
+  EXPECT_EQ(left_out[0].brick.placement.id, "off");
   EXPECT_NE(left_out[0].reason.find("below the table top"), std::string::npos)
       << left_out[0].reason;
   ASSERT_EQ(end_state.bricks.size(), 2u);

@@ -106,6 +106,16 @@ struct BadSceneBrick {
 Status findBadSceneBricks(const Scene& scene, const BrickTypeLibrary& types,
                           const WorldOptions& world, std::vector<BadSceneBrick>* bad);
 
+/// A brick taken out of a scene, and why.
+struct SetAsideBrick {
+  ScheduledBrick brick;
+  std::string reason;
+};
+
+/// Takes the bricks `bad` names (as findBadSceneBricks() lists them, in
+/// index order) out of `scene`; returns them in scene order.
+std::vector<SetAsideBrick> setAsideBadBricks(const std::vector<BadSceneBrick>& bad, Scene* scene);
+
 /// Judges the structure `scene` places at its first instant (the bricks
 /// whose `at` is the smallest), at rest where placed and together, by the
 /// rigid-block statics of mode `equilibrium` with every brick free, on the
