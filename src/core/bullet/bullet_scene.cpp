@@ -54,6 +54,15 @@ void configureSolver(const WorldOptions& options, btContactSolverInfo* solver_in
   if (options.friction_cone)
     solver_info->m_solverMode |=
         SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
+  if (options.full_warm_start) {
+    // Started from the whole of the last step's impulses, 20 iterations
+    // stay at the converged answer of a pile at rest instead of rebuilding
+    // it; the ERP's push out of a penetration, in the velocities, would be
+    // carried over with them and overshoot, so the split impulse, in a pass
+    // of its own, takes every penetration.
+    solver_info->m_warmstartingFactor = 1.0;
+    solver_info->m_splitImpulsePenetrationThreshold = 0.0;
+  }
 }
 
 }  // namespace
@@ -73,7 +82,7 @@ BulletScene::Impl::Impl(const WorldOptions& world_options) : options(world_optio
   dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
                                           box_box_algorithm.get());
   broadphase = std::make_unique<btDbvtBroadphase>();
-  solver = std::make_unique<ConeFrictionSolver>();
+  solver = std::make_unique<ConeFrictionSolver>(options.full_warm_start);
   world = std::make_unique<BrickDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                                collision_configuration.get());
   dispatcher->watch(world.get());

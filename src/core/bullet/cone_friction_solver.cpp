@@ -96,6 +96,36 @@ btScalar ConeFrictionSolver::solveFrictionPair(btSolverConstraint& first,
   return std::max(residual_first * residual_first, residual_second * residual_second);
 }
 
+void ConeFrictionSolver::convertContacts(btPersistentManifold** manifolds, int num_manifolds,
+                                         const btContactSolverInfo& info) {
+  btSequentialImpulseConstraintSolver::convertContacts(manifolds, num_manifolds, info);
+  if (!carry_friction_ || !(info.m_solverMode & SOLVER_USE_WARMSTARTING) ||
+      !(info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS))
+    return;
+  for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i) {
+    const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[i];
+    const auto* point = static_cast<const btManifoldPoint*>(contact.m_originalContactPoint);
+    if (!point) continue;
+    // Bullet wrote both directions' impulses back into the point at the end
+    // of the step before.
+    const btScalar carried[2] = {point->m_appliedImpulseLateral1 * info.m_warmstartingFactor,
+                                 point->m_appliedImpulseLateral2 * info.m_warmstartingFactor};
+    for (int k = 0; k < 2; ++k) {
+      btSolverConstraint& row =
+          m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex + k];
+      applyTotal(row, m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                 m_tmpSolverBodyPool[row.m_solverBodyIdB], carried[k]);
+    }
+  }
+}
+
+void ConeFrictionSolver::release(btSolverConstraint& row, btSolverConstraint* partner) {
+  btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+  btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+  if (row.m_appliedImpulse != 0) applyTotal(row, a, b, 0);
+  if (partner && partner->m_appliedImpulse != 0) applyTotal(*partner, a, b, 0);
+}
+
 btScalar ConeFrictionSolver::solveSingleIteration(
     int iteration, btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
     int num_manifolds, btTypedConstraint** constraints, int num_constraints,
@@ -132,7 +162,12 @@ btScalar ConeFrictionSolver::solveSingleIteration(
             : nullptr;
     if (partner && partner->m_frictionIndex != row.m_frictionIndex) partner = nullptr;
     if (partner) ++i;
-    if (normal <= 0) continue;  // a point that pushes nothing holds nothing
+    if (normal <= 0) {  // a point that pushes nothing holds nothing
+      // Not even what was carried over from the step before; without
+      // carrying, such a point's rows have never been solved this step.
+      if (carry_friction_) release(row, partner);
+      continue;
+    }
     if (partner) {
       residual = std::max(residual, solveFrictionPair(row, *partner, normal));
     } else {

@@ -82,6 +82,10 @@ Status validate(const WorldOptions& o) {
     return bad("split_impulse_penetration_threshold", o.split_impulse_penetration_threshold,
                "must be <= 0 m");
   if (!positive(o.erp) || o.erp > 1.0) return bad("erp", o.erp, "must be in (0, 1]");
+  // Bullet's friction turns its direction with the slip: what one step's
+  // friction was carried into the next would push the wrong way.
+  if (o.full_warm_start && !o.friction_cone)
+    return bad("full_warm_start", "true", "needs friction_cone = true");
   if (!nonNegative(o.collision_margin) || o.collision_margin > 0.01)
     return bad("collision_margin", o.collision_margin, "must be in [0, 0.01] m");
   if (!nonNegative(o.overlap_tolerance) || o.overlap_tolerance > 0.01)
@@ -147,6 +151,7 @@ Status readWorldOptions(OptionsReader& reader, WorldOptions* options) {
     reader.read("split_impulse_penetration_threshold", &world.split_impulse_penetration_threshold);
     reader.read("erp", &world.erp);
     reader.read("friction_cone", &world.friction_cone);
+    reader.read("full_warm_start", &world.full_warm_start);
     reader.read("collision_margin", &world.collision_margin);
     reader.read("overlap_tolerance", &world.overlap_tolerance);
     reader.read("fall_off_depth", &world.fall_off_depth);

@@ -1,6 +1,7 @@
 // Friction across a contact against Coulomb's law, with Bullet's own
-// friction (one direction, along the slip) and with the friction cone (two
-// directions held to the cone together). A plank sliding on the table at
+// friction (one direction, along the slip), with the friction cone (two
+// directions held to the cone together), and with the cone's friction
+// carried over from step to step (full_warm_start). A plank sliding on the table at
 // any angle to its axes stops after v^2 / (2 mu g), along the way it was
 // sent: friction clamped one direction at a time, a square of half-width
 // mu N, would stop it at 45 degrees after 1 / sqrt(2) of that, and bend
@@ -20,11 +21,19 @@ using test::kKaplaThickness;
 using test::placement;
 using test::runFor;
 
-class FrictionModel : public ::testing::TestWithParam<bool> {};
+enum class Friction { kAlongTheSlip, kCone, kConeCarriedOver };
+
+WorldOptions optionsWith(Friction friction) {
+  WorldOptions options = test::plainBulletOptions();
+  options.friction_cone = friction != Friction::kAlongTheSlip;
+  options.full_warm_start = friction == Friction::kConeCarriedOver;
+  return options;
+}
+
+class FrictionModel : public ::testing::TestWithParam<Friction> {};
 
 TEST_P(FrictionModel, APlankSlidingAtAnyAngleStopsWhereCoulombSays) {
-  WorldOptions options = test::plainBulletOptions();
-  options.friction_cone = GetParam();
+  const WorldOptions options = optionsWith(GetParam());
   const double mu = 0.5, speed = 1.0;  // pine on the pine table
   const double stopping_distance = speed * speed / (2.0 * mu * options.gravity);
   for (double angle_deg : {0.0, 30.0, 45.0, 80.0}) {
@@ -45,9 +54,19 @@ TEST_P(FrictionModel, APlankSlidingAtAnyAngleStopsWhereCoulombSays) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(BulletsAndTheCone, FrictionModel, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& info) {
-                           return std::string(info.param ? "cone" : "along_the_slip");
+INSTANTIATE_TEST_SUITE_P(BulletsAndTheCone, FrictionModel,
+                         ::testing::Values(Friction::kAlongTheSlip, Friction::kCone,
+                                           Friction::kConeCarriedOver),
+                         [](const ::testing::TestParamInfo<Friction>& info) {
+                           switch (info.param) {
+                             case Friction::kAlongTheSlip:
+                               return std::string("along_the_slip");
+                             case Friction::kCone:
+                               return std::string("cone");
+                             case Friction::kConeCarriedOver:
+                               break;
+                           }
+                           return std::string("cone_carried_over");
                          });
 
 }  // namespace

@@ -58,6 +58,8 @@ TEST(RunCommandLine, DefaultModeIsTheNodesAndTheConfigFilesSayNothingElse) {
   EXPECT_EQ(a.sleeping.time, b.sleeping.time);
   EXPECT_EQ(a.split_impulse_penetration_threshold, b.split_impulse_penetration_threshold);
   EXPECT_EQ(a.erp, b.erp);
+  EXPECT_EQ(a.friction_cone, b.friction_cone);
+  EXPECT_EQ(a.full_warm_start, b.full_warm_start);
   EXPECT_EQ(a.collision_margin, b.collision_margin);
   EXPECT_EQ(a.overlap_tolerance, b.overlap_tolerance);
   EXPECT_EQ(a.fall_off_depth, b.fall_off_depth);

@@ -77,6 +77,9 @@ TEST(NodeOptions, DefaultsAreValidAndMatchWorldOptions) {
   EXPECT_EQ(stability.contact_distance, defaults.stability.contact_distance);
   EXPECT_EQ(stability.min_margin, defaults.stability.min_margin);
   EXPECT_EQ(options.config.world.table.size, defaults.table.size);
+  EXPECT_EQ(options.config.world.friction_cone, defaults.friction_cone);
+  EXPECT_EQ(options.config.world.full_warm_start, defaults.full_warm_start);
+  EXPECT_FALSE(defaults.full_warm_start);  // Bullet's own unless asked
   EXPECT_EQ(options.config.publish.frame_id, "world");
   EXPECT_EQ(options.config.publish.frame_prefix, "");
   EXPECT_TRUE(options.config.data.scene_dirs.empty());
@@ -113,6 +116,7 @@ TEST(NodeOptions, ReadsEveryParameter) {
   params.set("table/restitution", 0.1);
   params.set("overlap_tolerance", 0.0002);
   params.set("fall_off_depth", 0.05);
+  params.set("full_warm_start", true);
   params.set("types_urdf", std::string("/x/bricks.urdf"));
   params.set("materials_yaml", std::string("/x/bricks.yaml"));
   params.set("scene_dirs",
@@ -149,6 +153,7 @@ TEST(NodeOptions, ReadsEveryParameter) {
   EXPECT_EQ(options.config.world.table.restitution, 0.1);
   EXPECT_EQ(options.config.world.overlap_tolerance, 0.0002);
   EXPECT_EQ(options.config.world.fall_off_depth, 0.05);
+  EXPECT_TRUE(options.config.world.full_warm_start);
   EXPECT_EQ(options.config.data.types_urdf, "/x/bricks.urdf");
   EXPECT_EQ(options.config.data.materials_yaml, "/x/bricks.yaml");
   ASSERT_EQ(options.config.data.scene_dirs.size(), 2u);
@@ -184,6 +189,20 @@ TEST(NodeOptions, RefusesBadNumbers) {
   expectRefused("table/restitution", 1.5);
   expectRefused("overlap_tolerance", -1e-4);
   expectRefused("fall_off_depth", 0.0);
+}
+
+TEST(NodeOptions, RefusesFullWarmStartWithBulletsOwnFriction) {
+  // Bullet's friction turns with the slip: last step's friction, carried
+  // into this one, would push the wrong way.
+  PrivateParameters params;
+  params.set("friction_cone", false);
+  params.set("full_warm_start", true);
+  NodeOptions options;
+  const Status status = params.load(&options);
+  EXPECT_FALSE(status.ok);
+  EXPECT_NE(status.message.find("full_warm_start"), std::string::npos) << status.message;
+  EXPECT_NE(status.message.find("friction_cone = true"), std::string::npos) << status.message;
+  expectRefused("full_warm_start", std::string("yes"));  // a bool, not a word
 }
 
 TEST(NodeOptions, RefusesBadStabilityThresholds) {

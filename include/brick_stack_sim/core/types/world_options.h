@@ -4,8 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "brick_stack_sim/core/types/stability_options.h"
 #include "brick_stack_sim/core/status.h"
+#include "brick_stack_sim/core/types/stability_options.h"
 
 namespace brick_stack_sim {
 
@@ -69,12 +69,21 @@ struct WorldOptions {
   /// Split impulse: position errors deeper than this are corrected without
   /// adding velocity [m]. Bullet's -0.04 m is five brick thicknesses.
   double split_impulse_penetration_threshold = -0.0004;
-  double erp = 0.2;                ///< Error reduction per step for contacts [-].
+  double erp = 0.2;  ///< Error reduction per step for contacts [-].
   /// Friction held to Coulomb's cone in two directions across a contact
   /// (true, the default: docs/design.md, "Bullet at brick scale"), or
   /// Bullet's own: one direction, that of the slip, along which a pile
   /// creeps (false).
   bool friction_cone = true;
+  /// Every contact's normal and friction impulses carried over whole from
+  /// one step to the next, and every penetration corrected by split
+  /// impulse, so that no position error feeds the velocities the carried
+  /// impulses start from (true; the scheme of Box2D and Jolt, which
+  /// needs `friction_cone`; `split_impulse_penetration_threshold` is then
+  /// ignored). false, the default: Bullet's own, the normal impulse carried
+  /// at 0.85 and friction rebuilt from nothing each step (docs/design.md,
+  /// "Bullet at brick scale").
+  bool full_warm_start = false;
   double collision_margin = 1e-4;  ///< Box collision margin [m], inside the box.
 
   /// A placement that would sink this deep into another brick is refused [m].
