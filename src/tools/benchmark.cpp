@@ -30,6 +30,7 @@ RunOptions optionsFor(const BenchSetting& setting, double duration) {
   RunOptions options;
   options.world.stability.mode = setting.mode;
   options.world.sleeping.enabled = setting.sleeping;
+  options.world.full_warm_start = setting.full_warm_start;
   options.world.time_step = setting.time_step;
   options.world.solver_iterations = setting.iterations;
   options.duration = duration;

@@ -17,10 +17,13 @@ namespace brick_stack_sim {
 
 /// One way of simulating: a stability mode with Bullet's settings.
 struct BenchSetting {
-  std::string mode_label;     ///< none_nosleep, none_sleep, or the mode's name
+  /// none_nosleep, none_sleep, none_full (plain Bullet, sleeping, with
+  /// full_warm_start), or the mode's name.
+  std::string mode_label;
   std::string mode = "none";  ///< A mode of the registry.
   bool sleeping = true;
-  double time_step = 1e-3;  ///< [s]
+  bool full_warm_start = false;  ///< WorldOptions::full_warm_start.
+  double time_step = 1e-3;       ///< [s]
   int iterations = 20;
 };
 

@@ -38,11 +38,20 @@ TEST(BenchmarkPiles, BothPlansLetThePilesSettleInTheModesThatSleep) {
       ++piles;
       EXPECT_EQ(c.metric, BenchMetric::kPile) << c.label;
       EXPECT_EQ(c.duration, 10.0) << c.label;
+      int carried_over = 0;
       for (const BenchSetting& s : c.settings) {
         EXPECT_TRUE(s.sleeping) << c.label << " " << s.mode_label;
         EXPECT_EQ(s.time_step, 1e-3);
         EXPECT_EQ(s.iterations, 20);
+        // Plain Bullet once more with its impulses carried over whole: the
+        // pile's other point of wall time against error.
+        EXPECT_EQ(s.full_warm_start, s.mode_label == "none_full") << c.label;
+        if (s.full_warm_start) {
+          ++carried_over;
+          EXPECT_EQ(s.mode, "none");
+        }
       }
+      EXPECT_EQ(carried_over, 1) << c.label;
     }
     EXPECT_GE(piles, 1);
   }
