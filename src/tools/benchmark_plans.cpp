@@ -20,7 +20,8 @@ std::vector<BenchSetting> settingsFor(const std::vector<std::string>& modes,
     for (const auto& [time_step, iterations] : steps) {
       BenchSetting s;
       s.mode_label = mode;
-      // Plain Bullet runs twice, with and without its own sleeping.
+      // Plain Bullet runs with and without its own sleeping, and on the
+      // piles once more with full_warm_start.
       s.mode = mode.rfind("none", 0) == 0 ? "none" : mode;
       s.sleeping = mode != "none_nosleep";
       s.full_warm_start = mode == "none_full";
