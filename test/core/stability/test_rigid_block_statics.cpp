@@ -201,6 +201,76 @@ bool harmonicStackStands(int n, double f) {
   return scene.stands();
 }
 
+/// `stacks` harmonic stacks of `n` free bricks side by side, 5 cm apart,
+/// each on its own fixed base; stack `odd_one` (when >= 0) at `f_odd`, the
+/// others at `f`. Returns the stack of each body (-1 for the bases).
+StaticsScene harmonicStacksSideBySide(int stacks, int n, double f, int odd_one, double f_odd,
+                                      std::vector<int>* stack_of) {
+  StaticsScene scene(0.5);
+  const double t = kKaplaThickness;
+  for (int k = 0; k < stacks; ++k) {
+    const double y = 0.05 * k;
+    const double fk = k == odd_one ? f_odd : f;
+    Eigen::Isometry3d pose = flatAt(0.0, 0.5 * t);
+    pose.translation().y() = y;
+    scene.add(pose, kKaplaMass, /*fixed=*/true);
+    stack_of->push_back(-1);
+    double x = 0.0;
+    for (int i = n; i >= 1; --i) {
+      x += fk * kKaplaLength / (2.0 * i);
+      pose = flatAt(x, (n - i + 1.5) * t);
+      pose.translation().y() = y;
+      scene.add(pose);
+      stack_of->push_back(k);
+    }
+  }
+  return scene;
+}
+
+TEST(RigidBlockStatics, ProblemsOfHundredsOfBricksFindTheSameThresholdAsOneStack) {
+  // 17 stacks of 12: 204 free bricks, the size of a settled pile's group,
+  // which the LP solves another way than a stack of tens (an interior
+  // point first, a vertex only when it does not balance). The threshold is
+  // still the harmonic stack's, and a stack past it is the only one that
+  // moves, with the least imbalance it has alone.
+  constexpr int kStacks = 17, kBricks = 12;
+  std::vector<int> stack_of;
+  const StaticsScene standing =
+      harmonicStacksSideBySide(kStacks, kBricks, 0.99, -1, 0.99, &stack_of);
+  const StaticsSolution all_stand = standing.solve();
+  ASSERT_TRUE(all_stand.solved) << all_stand.message;
+  EXPECT_TRUE(all_stand.feasible);
+  // The bases carry every free brick's weight.
+  const std::vector<StaticsContact> contacts = standing.contacts();
+  Eigen::Vector3d on_bases = Eigen::Vector3d::Zero();
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    if (contacts[c].b >= 0 && stack_of[contacts[c].b] < 0) on_bases += all_stand.forces[c];
+  EXPECT_NEAR(on_bases.z(), kStacks * kBricks * kKaplaMass * 9.81, 1e-6);
+  EXPECT_NEAR(on_bases.head<2>().norm(), 0.0, 1e-6);
+
+  stack_of.clear();
+  const StaticsSolution one_falls =
+      harmonicStacksSideBySide(kStacks, kBricks, 0.99, 5, 1.01, &stack_of).solve();
+  std::vector<int> alone_of;
+  const StaticsSolution alone =
+      harmonicStacksSideBySide(1, kBricks, 1.01, 0, 1.01, &alone_of).solve();
+  ASSERT_TRUE(one_falls.solved) << one_falls.message;
+  ASSERT_TRUE(alone.solved);
+  EXPECT_FALSE(one_falls.feasible);
+  EXPECT_FALSE(alone.feasible);
+  double total_imbalance = 0.0, alone_imbalance = 0.0;
+  int moving = 0;
+  for (std::size_t i = 0; i < stack_of.size(); ++i) {
+    total_imbalance += one_falls.imbalance[i];
+    if (!one_falls.moves[i]) continue;
+    ++moving;
+    EXPECT_EQ(stack_of[i], 5) << "body " << i;
+  }
+  for (double v : alone.imbalance) alone_imbalance += v;
+  EXPECT_GT(moving, 0);
+  EXPECT_NEAR(total_imbalance, alone_imbalance, 1e-6);
+}
+
 TEST(RigidBlockStatics, HarmonicStacksFindTheirThresholdWithinOnePercent) {
   for (int n : {4, 8, 12}) {
     EXPECT_TRUE(harmonicStackStands(n, 0.99)) << n << " bricks";
