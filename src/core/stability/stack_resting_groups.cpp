@@ -24,16 +24,20 @@ constexpr int kWithoutMechanismRounds = 4;
 
 void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
                                              std::vector<const BodyMotion*>* resting,
+                                             const std::vector<const BodyMotion*>& props,
                                              StabilityDecisions* decisions) {
   // The candidates: at rest and not admitted alone, those waiting where
   // statics woke them too: what holds such a brick now may be a partner at
   // rest, which it alone cannot count on, so alone it is refused for ever.
-  std::map<BodyHandle, std::size_t> candidate;
-  for (std::size_t i = 0; i < resting->size(); ++i) {
-    const BodyMotion* body = (*resting)[i];
-    if (!body) continue;
-    candidate[body->handle] = i;
-  }
+  // Each is found by its handle: in `resting` (and due) or among `props`.
+  struct Candidate {
+    const BodyMotion* body;
+    bool due;
+  };
+  std::map<BodyHandle, Candidate> candidate;
+  for (const BodyMotion* body : *resting)
+    if (body) candidate[body->handle] = Candidate{body, true};
+  for (const BodyMotion* body : props) candidate[body->handle] = Candidate{body, false};
   std::map<BodyHandle, bool> pressed_components;
   std::set<BodyHandle> seen;
   for (const auto& entry : candidate) {
@@ -46,13 +50,18 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
         if (candidate.count(other) && seen.insert(other).second) group.push_back(other);
       }
     }
-    if (group.size() < 2) continue;
+    if (group.size() < 2 || std::none_of(group.begin(), group.end(), [&](BodyHandle member) {
+          return candidate.at(member).due;
+        }))
+      continue;
     std::sort(group.begin(), group.end());
     std::vector<BodyMotion> bodies;
-    for (BodyHandle member : group) bodies.push_back(*(*resting)[candidate.at(member)]);
-    for (BodyHandle frozen :
-         freezeWhatStands(std::move(bodies), index, &pressed_components, decisions))
-      (*resting)[candidate.at(frozen)] = nullptr;
+    for (BodyHandle member : group) bodies.push_back(*candidate.at(member).body);
+    std::vector<BodyHandle> frozen =
+        freezeWhatStands(std::move(bodies), index, &pressed_components, decisions);
+    std::sort(frozen.begin(), frozen.end());
+    for (const BodyMotion*& body : *resting)
+      if (body && std::binary_search(frozen.begin(), frozen.end(), body->handle)) body = nullptr;
   }
 }
 

@@ -76,7 +76,10 @@ class StackStabilityModel : public StabilityModel {
   /// they freeze), the groups that touch each other and something frozen or
   /// the ground: each joins the stack as a whole when the criterion admits
   /// it (a pile's planks leaning on planks that are themselves at rest).
+  /// `props`, at rest for less than a window, join the groups they touch;
+  /// a group of props alone is not asked.
   void admitRestingGroups(const ContactIndex& index, std::vector<const BodyMotion*>* resting,
+                          const std::vector<const BodyMotion*>& props,
                           StabilityDecisions* decisions);
   /// Of `bodies` (in handle order), at rest and touching each other as
   /// `index` says, the part that stands joins the stack: the whole group
@@ -165,6 +168,10 @@ class StackStabilityModel : public StabilityModel {
   /// How long [s] a refused mover waits, on a step of `dt` [s], until the
   /// next tick at which every refused mover is asked again.
   double untilSharedTick(double dt) const;
+  /// Whether this step, of `dt` [s], is such a tick.
+  bool atSharedTick(double dt) const;
+  /// Steps of `dt` [s] in a rest window (at least one).
+  std::uint64_t restWindowSteps(double dt) const;
   /// Whether the model woke `body` and it has not moved away since.
   bool wokenInPlace(const BodyMotion& body) const;
   /// Whether `body`, a source of measured loads, is not among resting_.

@@ -347,6 +347,32 @@ TEST_P(ModelConformance, AGroupAtRestWaitsWhileAMoverPressesOnItAndFreezesOnceIt
   EXPECT_TRUE(frozen(1));
 }
 
+TEST_P(ModelConformance, AGroupFreezesWithAPartnerWhoseRestWindowHasNotFilled) {
+  // The V of the tests above, which statics holds. b0 is still; b1 crosses
+  // the rest speed for one step in every 15, as a plank of a settling pile
+  // jitters, so its rest window (20 steps) never fills. b0 alone leans on
+  // a brick that moves and cannot freeze; judged only with bricks whose
+  // window has filled, the V never was. At the shared tick the bricks at
+  // rest now join the groups they touch: the V freezes.
+  if (!model_->judgesLeaning()) GTEST_SKIP() << "judges no leaning groups";
+  const double mu = 0.5, dt = 1e-3;
+  const RestingV v = restingV(mu, 0.5 * test::vThresholdAngle(mu));
+  const int window = static_cast<int>(std::lround(options_.rest_time / dt));
+  ASSERT_GT(window, 15);
+  for (int step = 0; step < 10 * window && !(frozen(0) && frozen(1)); ++step) {
+    StabilityInput input;
+    input.dt = dt;
+    input.contacts = &v.contacts;
+    input.movers = v.movers;
+    if (step % 15 == 7) input.movers[1].linear_velocity.x() = 2.0 * options_.rest_linear_speed;
+    StabilityDecisions decisions;
+    model_->decide(input, &decisions);
+    EXPECT_TRUE(decisions.wake.empty()) << "step " << step;
+  }
+  EXPECT_TRUE(frozen(0));
+  EXPECT_TRUE(frozen(1));
+}
+
 /// `upper`, at rest on `lower` over the rectangle x0..x1, y0..y1 at height
 /// z, pressing on it at the rectangle's corners with `share` of its weight,
 /// as the engine split its weight in a step of `dt`.

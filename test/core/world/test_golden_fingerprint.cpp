@@ -176,9 +176,12 @@ const Expected kExpected[] = {
     // pile, and the slant tower as it falls in Bullet). A flush overlap
     // with more than four corners keeps them all, in a second manifold:
     // every run in which a brick lies on another in Bullet at a small angle.
+    // At a shared tick the bricks at rest whose window has not filled yet
+    // join the groups they touch: the fallen slant tower's planks freeze as
+    // one group of 11 (the lower 8 a tick later, the top 3 earlier).
     {"pile", "com", 0x1f0f5916b462e299ULL},
     {"slant_tower", "none", 0x61852984c6cb61f0ULL},
-    {"slant_tower", "com", 0x2e23c79d740d1508ULL},
+    {"slant_tower", "com", 0x1a3548031cef918aULL},
     {"remove_and_push", "none", 0x4fb436dd2a432491ULL},
     {"remove_and_push", "com", 0x5f18032af53908b0ULL},
     // Mode equilibrium: a flat stack that the COM rule finds
@@ -186,7 +189,7 @@ const Expected kExpected[] = {
     // end as in com.
     {"built_tower", "equilibrium", 0x7a00383680c6e0c3ULL},
     {"pile", "equilibrium", 0x1f0f5916b462e299ULL},
-    {"slant_tower", "equilibrium", 0x2e23c79d740d1508ULL},
+    {"slant_tower", "equilibrium", 0x1a3548031cef918aULL},
     {"remove_and_push", "equilibrium", 0x5f18032af53908b0ULL},
 };
 
