@@ -2,6 +2,7 @@
 // and the CSV it writes; benchmark.cpp runs them.
 #include "brick_stack_sim/tools/benchmark.h"
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,10 +22,15 @@ std::vector<BenchSetting> settingsFor(const std::vector<std::string>& modes,
       BenchSetting s;
       s.mode_label = mode;
       // Plain Bullet runs with and without its own sleeping, and on the
-      // piles once more with full_warm_start.
-      s.mode = mode.rfind("none", 0) == 0 ? "none" : mode;
+      // piles plain Bullet and com once more with full_warm_start.
+      const std::string full_suffix = "_full";
+      s.full_warm_start =
+          mode.size() > full_suffix.size() &&
+          mode.compare(mode.size() - full_suffix.size(), full_suffix.size(), full_suffix) == 0;
+      const std::string base =
+          s.full_warm_start ? mode.substr(0, mode.size() - full_suffix.size()) : mode;
+      s.mode = base.rfind("none", 0) == 0 ? "none" : base;
       s.sleeping = mode != "none_nosleep";
-      s.full_warm_start = mode == "none_full";
       s.time_step = time_step;
       s.iterations = iterations;
       settings.push_back(s);
@@ -116,11 +122,14 @@ void addMotions(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
 /// Piles dropped and left to settle for 10 s, the modes that sleep side by
 /// side: long enough to see a pile land (about 1 s), settle, and cost what a
 /// settled pile costs in its last second. Plain Bullet without sleeping has
-/// no rest to measure; plain Bullet with full_warm_start is the pile's other
-/// point of wall time against error.
+/// no rest to measure; plain Bullet and com with full_warm_start are the
+/// pile's other points of wall time against error (with it, com freezes
+/// pile1000 whole; without, Bullet's jitter keeps most of it dynamic).
 void addPiles(const std::vector<std::string>& scenes, BenchPlan* plan) {
   std::vector<std::string> modes = sleepingModes();
   modes.insert(modes.begin() + 1, "none_full");
+  const auto com = std::find(modes.begin(), modes.end(), "com");
+  if (com != modes.end()) modes.insert(com + 1, "com_full");
   for (const std::string& scene : scenes)
     plan->cases.push_back(
         makeCase(scene, scene, BenchMetric::kPile, 10.0, settingsFor(modes, {{1.0 / 1000, 20}})));

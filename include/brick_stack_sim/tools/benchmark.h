@@ -18,7 +18,8 @@ namespace brick_stack_sim {
 /// One way of simulating: a stability mode with Bullet's settings.
 struct BenchSetting {
   /// none_nosleep, none_sleep, none_full (plain Bullet, sleeping, with
-  /// full_warm_start), or the mode's name.
+  /// full_warm_start), the mode's name, or com_full (com with
+  /// full_warm_start).
   std::string mode_label;
   std::string mode = "none";  ///< A mode of the registry.
   bool sleeping = true;
