@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/scene/scene.h"
 #include "support/kapla.h"
 
@@ -18,6 +19,22 @@ constexpr double kCube = 0.0234;
 inline Scene parsed(const std::string& yaml) {
   Scene scene;
   const Status s = parseScene(yaml, "sweep", packageTypes(), &scene);
+  EXPECT_TRUE(s.ok) << s.message;
+  return scene;
+}
+
+/// `bricks` KAPLA planks dropped as a pile from a `columns` x `rows`
+/// lattice (generatePile with `seed`), expecting it to be generated.
+inline Scene droppedPileScene(int bricks, int columns, int rows, unsigned seed = 1) {
+  PileParams pile;
+  pile.bricks = bricks;
+  pile.columns = columns;
+  pile.rows = rows;
+  pile.seed = seed;
+  pile.type = "kapla";
+  Scene scene;
+  scene.name = "pile";
+  const Status s = generatePile(pile, packageTypes(), &scene.bricks);
   EXPECT_TRUE(s.ok) << s.message;
   return scene;
 }

@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/simulation/simulation.h"
 #include "support/kapla.h"
+#include "support/scenes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -23,18 +23,9 @@ namespace {
 /// How far each plank still on the table moved between `from` and `to` [s]
 /// after `bricks` planks were dropped as a pile [m], smallest first.
 std::vector<double> pileCreep(const WorldOptions& options, int bricks, double from, double to) {
-  const BrickTypeLibrary types = test::packageTypes();
-  PileParams pile;
-  pile.bricks = bricks;
-  pile.columns = 5;
-  pile.rows = 4;
-  pile.type = "kapla";
-  Scene scene;
-  scene.name = "pile";
-  EXPECT_TRUE(generatePile(pile, types, &scene.bricks).ok);
   std::unique_ptr<Simulation> simulation;
-  EXPECT_TRUE(Simulation::create(options, types, &simulation).ok);
-  EXPECT_TRUE(simulation->reset(scene).ok);
+  EXPECT_TRUE(Simulation::create(options, test::packageTypes(), &simulation).ok);
+  EXPECT_TRUE(simulation->reset(test::droppedPileScene(bricks, 5, 4)).ok);
   while (simulation->world().time() < from) simulation->step();
   std::map<std::string, Eigen::Vector3d> before;
   for (const BrickSnapshot& brick : simulation->world().snapshot())

@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "brick_stack_sim/core/scene/generators.h"
 #include "brick_stack_sim/core/simulation/simulation.h"
 #include "support/kapla.h"
+#include "support/scenes.h"
 
 namespace brick_stack_sim {
 namespace {
@@ -24,22 +24,12 @@ bool frozen(BrickState state) {
 
 TEST(FullWarmStartPile, TwoHundredDroppedPlanksFreezeWithinSecondsOfLanding) {
   // pile200: 200 planks over 7 x 5 cells, 6 layers; they land within 1 s.
-  const BrickTypeLibrary types = test::packageTypes();
-  PileParams pile;
-  pile.bricks = 200;
-  pile.columns = 7;
-  pile.rows = 5;
-  pile.seed = 1;
-  pile.type = "kapla";
-  Scene scene;
-  scene.name = "pile";
-  ASSERT_TRUE(generatePile(pile, types, &scene.bricks).ok);
   WorldOptions options;
   options.stability.mode = "com";
   options.full_warm_start = true;
   std::unique_ptr<Simulation> simulation;
-  ASSERT_TRUE(Simulation::create(options, types, &simulation).ok);
-  ASSERT_TRUE(simulation->reset(scene).ok);
+  ASSERT_TRUE(Simulation::create(options, test::packageTypes(), &simulation).ok);
+  ASSERT_TRUE(simulation->reset(test::droppedPileScene(200, 7, 5, 1)).ok);
   while (simulation->world().time() < 4.0) simulation->step();
 
   std::size_t frozen_bricks = 0, bricks = 0;
