@@ -124,7 +124,7 @@ void addMotions(const std::vector<BenchSetting>& settings, BenchPlan* plan) {
 /// settled pile costs in its last second. Plain Bullet without sleeping has
 /// no rest to measure; plain Bullet and com with full_warm_start are the
 /// pile's other points of wall time against error (with it, com freezes
-/// pile1000 whole; without, Bullet's jitter keeps most of it dynamic).
+/// pile1000 whole; without, the pile creeps and most of it stays dynamic).
 void addPiles(const std::vector<std::string>& scenes, BenchPlan* plan) {
   std::vector<std::string> modes = sleepingModes();
   modes.insert(modes.begin() + 1, "none_full");
