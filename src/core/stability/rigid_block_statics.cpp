@@ -268,6 +268,20 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
     names = std::make_unique<BasisNames>(*warm, lp, first_column, edges, first_imbalance,
                                          bodies.size());
   }
+  // The imbalance and forces of the solution in `solved`, and whether they
+  // balance: the same test for an interior point as for a vertex.
+  const auto read_answer = [&](const ClpSimplex& solved) {
+    const double* x = solved.getColSolution();
+    solution.imbalance.assign(bodies.size(), 0.0);
+    solution.forces.assign(contacts.size(), Eigen::Vector3d::Zero());
+    const double total = readImbalance(lp, x, first_imbalance, &solution.imbalance);
+    readContactForces(lp, x, first_column, edges, &solution.forces);
+    solution.solved = true;
+    solution.feasible = total <= options.tolerance * std::max<std::size_t>(1, bodies.size());
+    for (double& value : solution.imbalance)
+      if (value <= options.tolerance) value = 0.0;
+    return solution.feasible;
+  };
   ClpSimplex model;
   const bool barrier =
       lp.freeBodyCount() >= kBarrierBodies && (!names || names->knownBodies() < kKnownForWarmStart);
@@ -275,16 +289,9 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
     // A large problem that balances is answered by the interior point: any
     // admissible set of forces proves it stands. One that does not is
     // solved again to a vertex, whose duals name the mechanism.
-    if (lp.solveByBarrier(&model, false, &solution.iterations)) {
-      const double* x = model.getColSolution();
-      std::vector<double> imbalance(bodies.size(), 0.0);
-      if (readImbalance(lp, x, first_imbalance, &imbalance) <=
-          options.tolerance * static_cast<double>(std::max<std::size_t>(1, bodies.size()))) {
-        solution.solved = solution.feasible = true;
-        readContactForces(lp, x, first_column, edges, &solution.forces);
-        return solution;
-      }
-    }
+    if (lp.solveByBarrier(&model, false, &solution.iterations) && read_answer(model))
+      return solution;
+    solution.solved = false;
     model = ClpSimplex();
   }
   if (!solveFromWarmStart(lp, names.get(), barrier, &model, &solution.iterations)) {
@@ -294,13 +301,7 @@ StaticsSolution solveStatics(const std::vector<StaticsBody>& bodies,
                        std::to_string(model.secondaryStatus()) + ")";
     return solution;
   }
-  solution.solved = true;
-  const double* x = model.getColSolution();
-  const double total = readImbalance(lp, x, first_imbalance, &solution.imbalance);
-  readContactForces(lp, x, first_column, edges, &solution.forces);
-  solution.feasible = total <= options.tolerance * std::max<std::size_t>(1, bodies.size());
-  for (double& value : solution.imbalance)
-    if (value <= options.tolerance) value = 0.0;
+  read_answer(model);
   if (!solution.feasible) markMechanism(lp, model, &solution.moves);
   return solution;
 }
