@@ -29,15 +29,17 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
   // The candidates: at rest and not admitted alone, those waiting where
   // statics woke them too: what holds such a brick now may be a partner at
   // rest, which it alone cannot count on, so alone it is refused for ever.
-  // Each is found by its handle: in `resting` (and due) or among `props`.
+  // Each is found by its handle: at its index in `resting` (and due), or
+  // among `props` (no index).
+  constexpr std::size_t kProp = static_cast<std::size_t>(-1);
   struct Candidate {
     const BodyMotion* body;
-    bool due;
+    std::size_t resting_index;
   };
   std::map<BodyHandle, Candidate> candidate;
-  for (const BodyMotion* body : *resting)
-    if (body) candidate[body->handle] = Candidate{body, true};
-  for (const BodyMotion* body : props) candidate[body->handle] = Candidate{body, false};
+  for (std::size_t i = 0; i < resting->size(); ++i)
+    if (const BodyMotion* body = (*resting)[i]) candidate[body->handle] = Candidate{body, i};
+  for (const BodyMotion* body : props) candidate[body->handle] = Candidate{body, kProp};
   std::map<BodyHandle, bool> pressed_components;
   std::set<BodyHandle> seen;
   for (const auto& entry : candidate) {
@@ -51,17 +53,17 @@ void StackStabilityModel::admitRestingGroups(const ContactIndex& index,
       }
     }
     if (group.size() < 2 || std::none_of(group.begin(), group.end(), [&](BodyHandle member) {
-          return candidate.at(member).due;
+          return candidate.at(member).resting_index != kProp;
         }))
       continue;
     std::sort(group.begin(), group.end());
     std::vector<BodyMotion> bodies;
     for (BodyHandle member : group) bodies.push_back(*candidate.at(member).body);
-    std::vector<BodyHandle> frozen =
-        freezeWhatStands(std::move(bodies), index, &pressed_components, decisions);
-    std::sort(frozen.begin(), frozen.end());
-    for (const BodyMotion*& body : *resting)
-      if (body && std::binary_search(frozen.begin(), frozen.end(), body->handle)) body = nullptr;
+    for (BodyHandle frozen :
+         freezeWhatStands(std::move(bodies), index, &pressed_components, decisions)) {
+      const std::size_t at = candidate.at(frozen).resting_index;
+      if (at != kProp) (*resting)[at] = nullptr;
+    }
   }
 }
 
