@@ -185,22 +185,6 @@ TEST_P(Ladder, PlankAgainstAHeavyBlockStandsByItsOwnFormula) {
 
 INSTANTIATE_TEST_SUITE_P(WithAndWithoutWallFriction, Ladder, ::testing::Values(0.0, 0.3));
 
-/// A harmonic stack (docs/testing.md, "Ground truth"): brick i from the top sits f L / (2 i)
-/// beyond the one below it, the bottom one on the table's edge... here on a
-/// fixed base brick. It stands for f < 1 and falls for f > 1.
-bool harmonicStackStands(int n, double f) {
-  StaticsScene scene(0.5);
-  const double t = kKaplaThickness;
-  scene.add(flatAt(0.0, 0.5 * t), kKaplaMass, /*fixed=*/true);
-  double x = 0.0;
-  // From the bottom: brick n (the lowest free one) down to 1 (the top).
-  for (int i = n; i >= 1; --i) {
-    x += f * kKaplaLength / (2.0 * i);
-    scene.add(flatAt(x, (n - i + 1.5) * t));
-  }
-  return scene.stands();
-}
-
 /// `stacks` harmonic stacks of `n` free bricks side by side, 5 cm apart,
 /// each on its own fixed base; stack `odd_one` (when >= 0) at `f_odd`, the
 /// others at `f`. Returns the stack of each body (-1 for the bases).
@@ -225,6 +209,14 @@ StaticsScene harmonicStacksSideBySide(int stacks, int n, double f, int odd_one, 
     }
   }
   return scene;
+}
+
+/// A harmonic stack (docs/testing.md, "Ground truth"): brick i from the top sits f L / (2 i)
+/// beyond the one below it, the bottom one on the table's edge... here on a
+/// fixed base brick. It stands for f < 1 and falls for f > 1.
+bool harmonicStackStands(int n, double f) {
+  std::vector<int> stack_of;
+  return harmonicStacksSideBySide(1, n, f, -1, f, &stack_of).stands();
 }
 
 TEST(RigidBlockStatics, ProblemsOfHundredsOfBricksFindTheSameThresholdAsOneStack) {
